@@ -1,0 +1,73 @@
+package org.kse.expression;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.resource.XtextResource;
+import org.eclipse.xtext.resource.XtextResourceSet;
+import org.eclipse.xtext.util.CancelIndicator;
+import org.eclipse.xtext.validation.CheckMode;
+import org.eclipse.xtext.validation.IResourceValidator;
+import org.eclipse.xtext.validation.Issue;
+import org.kse.expression.transitionExpression.TransitionExpression;
+
+import com.google.inject.Injector;
+
+/**
+ * Parses one transition expression, as found in a model's {@code TE} attribute.
+ * Lines and columns of the issues count inside the expression text (1-based).
+ */
+public final class ExpressionParser {
+
+	/** A parsed expression; {@code expression} is null only when the text is blank. */
+	public record Result(TransitionExpression expression, List<Issue> issues) {
+		public boolean hasErrors() {
+			return issues.stream().anyMatch(issue -> issue.getSeverity() == Severity.ERROR);
+		}
+	}
+
+	private static final URI SYNTHETIC_URI = URI.createURI("inmemory:/transition.texpr");
+
+	private static final class Holder {
+		static final Injector INJECTOR = new TransitionExpressionStandaloneSetup().createInjectorAndDoEMFRegistration();
+	}
+
+	private ExpressionParser() {
+	}
+
+	public static Injector injector() {
+		return Holder.INJECTOR;
+	}
+
+	public static Result parse(String text) {
+		if (text == null || text.isBlank()) {
+			return new Result(null, List.of());
+		}
+		Injector injector = injector();
+		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
+		XtextResource resource = (XtextResource) resourceSet.createResource(SYNTHETIC_URI);
+		try {
+			resource.load(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), Map.of(XtextResource.OPTION_ENCODING, "UTF-8"));
+			List<Issue> issues = new ArrayList<>(injector.getInstance(IResourceValidator.class)
+					.validate(resource, CheckMode.ALL, CancelIndicator.NullImpl));
+			TransitionExpression expression = resource.getContents().isEmpty() ? null
+					: (TransitionExpression) resource.getContents().get(0);
+			return new Result(expression, issues);
+		} catch (IOException | RuntimeException | StackOverflowError e) {
+			Issue.IssueImpl issue = new Issue.IssueImpl();
+			issue.setSeverity(Severity.ERROR);
+			issue.setMessage(e instanceof StackOverflowError ? "parentheses nested too deeply" : String.valueOf(e.getMessage()));
+			issue.setLineNumber(1);
+			issue.setColumn(1);
+			issue.setOffset(0);
+			issue.setLength(0);
+			return new Result(null, List.of(issue));
+		}
+	}
+}
