@@ -1,0 +1,140 @@
+package org.kse.model;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.HashMap;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.ResourceSet;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
+import org.eclipse.emf.ecore.xmi.XMLResource;
+import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.StatechartPackage;
+
+/**
+ * Loading and saving {@code .stct} files, inside or outside OSGi. Saves are atomic:
+ * the new content is written beside the file and moved over it, so a crash never
+ * leaves half a model behind.
+ */
+public final class StatechartResources {
+
+	public static final String FILE_EXTENSION = "stct";
+
+	private StatechartResources() {
+	}
+
+	/** A resource set that knows the statechart package and the .stct extension. */
+	public static ResourceSet newResourceSet() {
+		ResourceSet resourceSet = new ResourceSetImpl();
+		resourceSet.getPackageRegistry().put(StatechartPackage.eNS_URI, StatechartPackage.eINSTANCE);
+		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put(FILE_EXTENSION, new XMIResourceFactoryImpl());
+		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put("*", new XMIResourceFactoryImpl());
+		return resourceSet;
+	}
+
+	/**
+	 * Loads the model of a file.
+	 *
+	 * @throws IOException with a message naming the file when it is missing or is not a statechart model
+	 */
+	public static Model load(Path file) throws IOException {
+		return load(newResourceSet(), file);
+	}
+
+	public static Model load(ResourceSet resourceSet, Path file) throws IOException {
+		if (!Files.isRegularFile(file)) {
+			throw new IOException(file + ": no such file");
+		}
+		Resource resource = resourceSet.createResource(URI.createFileURI(file.toAbsolutePath().toString()));
+		try {
+			resource.load(loadOptions());
+		} catch (IOException | RuntimeException e) {
+			throw new IOException(file + ": not a statechart model (" + rootCause(e) + ")", e);
+		}
+		if (resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof Model model)) {
+			throw new IOException(file + ": not a statechart model (its root element is not statechart:Model)");
+		}
+		return model;
+	}
+
+	/** Puts a model into a new resource for {@code file}; call {@link #save} to write it. */
+	public static Resource attach(Model model, Path file) {
+		Resource resource = newResourceSet().createResource(URI.createFileURI(file.toAbsolutePath().toString()));
+		resource.getContents().add(model);
+		return resource;
+	}
+
+	/** Writes the model's resource to its file, atomically. */
+	public static void save(Model model) throws IOException {
+		Resource resource = model.eResource();
+		if (resource == null) {
+			throw new IOException("the model is not attached to a file");
+		}
+		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+		resource.save(bytes, saveOptions());
+		Path target = Path.of(resource.getURI().toFileString());
+		writeAtomically(target, bytes.toByteArray());
+	}
+
+	/** Saves a model to a file (detached from any previous resource). */
+	public static void save(Model model, Path file) throws IOException {
+		if (model.eResource() == null || !file.toAbsolutePath().toString().equals(model.eResource().getURI().toFileString())) {
+			attach(model, file);
+		}
+		save(model);
+	}
+
+	/** Serializes a model as the bytes its file would hold. */
+	public static byte[] toBytes(Model model) throws IOException {
+		Resource resource = model.eResource() != null ? model.eResource() : attach(model, Path.of("model.stct"));
+		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+		resource.save(bytes, saveOptions());
+		return bytes.toByteArray();
+	}
+
+	public static void writeAtomically(Path target, byte[] content) throws IOException {
+		Path directory = target.toAbsolutePath().getParent();
+		Files.createDirectories(directory);
+		Path temporary = Files.createTempFile(directory, "." + target.getFileName(), ".tmp");
+		try {
+			Files.write(temporary, content);
+			try {
+				Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+			} catch (AtomicMoveNotSupportedException e) {
+				Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING);
+			}
+		} finally {
+			Files.deleteIfExists(temporary);
+		}
+	}
+
+	private static Map<Object, Object> loadOptions() {
+		Map<Object, Object> options = new HashMap<>();
+		options.put(XMLResource.OPTION_DEFER_IDREF_RESOLUTION, Boolean.TRUE);
+		return options;
+	}
+
+	private static Map<Object, Object> saveOptions() {
+		Map<Object, Object> options = new HashMap<>();
+		// the original tool's files are ASCII with character references; keep that
+		options.put(XMLResource.OPTION_ENCODING, "ASCII");
+		options.put(XMLResource.OPTION_SAVE_TYPE_INFORMATION, Boolean.FALSE);
+		return options;
+	}
+
+	private static String rootCause(Throwable e) {
+		Throwable cause = e;
+		while (cause.getCause() != null && cause.getCause() != cause) {
+			cause = cause.getCause();
+		}
+		String message = cause.getMessage();
+		return message == null ? cause.getClass().getSimpleName() : message;
+	}
+}
