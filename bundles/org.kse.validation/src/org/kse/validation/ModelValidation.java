@@ -1,0 +1,35 @@
+package org.kse.validation;
+
+import java.util.HashMap;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.BasicDiagnostic;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EValidator;
+import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
+import org.eclipse.emf.ecore.util.Diagnostician;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.StatechartPackage;
+
+/** Headless validation of a whole model with the KSE rules. */
+public final class ModelValidation {
+
+	private ModelValidation() {
+	}
+
+	/** All diagnostics of the model, as children of the returned diagnostic, in document order. */
+	public static Diagnostic validate(Model model) {
+		EValidator.Registry registry = new EValidatorRegistryImpl();
+		registry.put(StatechartPackage.eINSTANCE, new StatechartValidator());
+		Diagnostician diagnostician = new Diagnostician(registry) {
+			@Override
+			public String getObjectLabel(org.eclipse.emf.ecore.EObject eObject) {
+				return Labels.describe(eObject);
+			}
+		};
+		BasicDiagnostic result = diagnostician.createDefaultDiagnostic(model);
+		Map<Object, Object> context = new HashMap<>(diagnostician.createDefaultContext());
+		diagnostician.validate(model, result, context);
+		return result;
+	}
+}

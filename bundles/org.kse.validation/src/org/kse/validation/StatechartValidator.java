@@ -1,0 +1,177 @@
+package org.kse.validation;
+
+import java.util.HashMap;
+import java.util.Map;
+import java.util.regex.Pattern;
+
+import org.eclipse.emf.common.util.BasicDiagnostic;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.DiagnosticChain;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EDataType;
+import org.eclipse.emf.ecore.EValidator;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.validation.Issue;
+import org.kse.expression.ExpressionParser;
+import org.kse.model.NodeKind;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.model.statechart.StatechartPackage;
+import org.kse.model.statechart.Transition;
+import org.kse.model.statechart.Variable;
+
+/**
+ * The statechart rules of the original tool (reference §5) as an EMF validator, so
+ * that the headless tools and the editors report the same diagnostics. Each
+ * diagnostic's data holds the offending element first; a transition-expression
+ * problem also holds its {@link Issue}, whose offset counts inside the expression.
+ */
+public class StatechartValidator implements EValidator {
+
+	public static final String DIAGNOSTIC_SOURCE = "org.kse.validation";
+
+	public static final int ROOT = 1;
+	public static final int AND_CHILDREN = 2;
+	public static final int START_COUNT = 3;
+	public static final int END_COUNT = 4;
+	public static final int START_TARGET = 5;
+	public static final int END_SOURCE = 6;
+	public static final int SAME_PARENT = 7;
+	public static final int EXPRESSION = 8;
+	public static final int VARIABLE_NAME = 9;
+	public static final int VARIABLE_TYPE = 10;
+	public static final int NODE_TYPE = 11;
+	public static final int DANGLING = 12;
+	public static final int LEAF_CHILDREN = 13;
+	public static final int DUPLICATE_LABEL = 14;
+
+	private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z_]\\w*");
+	private static final Pattern MESSAGE_TYPE = Pattern.compile("[A-Za-z_]\\w*\\.(Signal|State|Data)\\.[A-Za-z_]\\w*");
+
+	@Override
+	public boolean validate(EObject object, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return validate(object.eClass(), object, diagnostics, context);
+	}
+
+	@Override
+	public boolean validate(EClass eClass, EObject object, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		if (diagnostics == null) {
+			return true;
+		}
+		if (object instanceof Model model) {
+			validateModel(model, diagnostics);
+		} else if (object instanceof Node node) {
+			validateNode(node, diagnostics, context);
+		} else if (object instanceof Transition transition) {
+			validateTransition(transition, diagnostics);
+		} else if (object instanceof Variable variable) {
+			validateVariable(variable, diagnostics);
+		}
+		return true;
+	}
+
+	private void validateModel(Model model, DiagnosticChain diagnostics) {
+		if (model.getNodes().size() != 1) {
+			error(diagnostics, ROOT, model, "the model needs exactly one root state; it has " + model.getNodes().size());
+		}
+		if (!model.getNodes().isEmpty() && !NodeKind.OR.is(model.getNodes().get(0))) {
+			error(diagnostics, ROOT, model.getNodes().get(0), "the root state must be an OR state, not " + model.getNodes().get(0).getType());
+		}
+	}
+
+	private void validateNode(Node node, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		NodeKind kind = NodeKind.of(node);
+		if (kind == null) {
+			error(diagnostics, NODE_TYPE, node, "unknown state type '" + node.getType() + "': use OR, AND, BASIC, START, END or CONDITION");
+			return;
+		}
+		checkUniqueLabel(node, diagnostics, context);
+		switch (kind) {
+			case AND -> {
+				for (Node child : node.getChildren()) {
+					if (!NodeKind.OR.is(child)) {
+						error(diagnostics, AND_CHILDREN, child, "an AND state holds only OR states (its regions), not " + child.getType());
+					}
+				}
+			}
+			case OR -> {
+				long starts = node.getChildren().stream().filter(NodeKind.START::is).count();
+				if (starts != 1) {
+					error(diagnostics, START_COUNT, node, "an OR state needs exactly one START state; it has " + starts);
+				}
+				long ends = node.getChildren().stream().filter(NodeKind.END::is).count();
+				if (ends > 1) {
+					error(diagnostics, END_COUNT, node, "an OR state has at most one END state; it has " + ends);
+				}
+			}
+			default -> {
+				if (!node.getChildren().isEmpty()) {
+					error(diagnostics, LEAF_CHILDREN, node, "a " + kind + " state cannot hold other states");
+				}
+			}
+		}
+	}
+
+	@SuppressWarnings("unchecked")
+	private void checkUniqueLabel(Node node, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		if (node.getLabel() == null || context == null) {
+			return;
+		}
+		Map<String, Node> labels = (Map<String, Node>) context.computeIfAbsent(StatechartValidator.class, key -> new HashMap<String, Node>());
+		Node other = labels.putIfAbsent(node.getLabel(), node);
+		if (other != null && other != node) {
+			warning(diagnostics, DUPLICATE_LABEL, node, "the label is also used by " + Labels.describe(other) + "; run Label to renumber");
+		}
+	}
+
+	private void validateTransition(Transition transition, DiagnosticChain diagnostics) {
+		Node source = transition.getSource();
+		Node target = transition.getTarget();
+		if (source == null || target == null) {
+			error(diagnostics, DANGLING, transition, "the transition has no " + (source == null ? "source" : "target") + " state");
+		} else {
+			if (NodeKind.START.is(target)) {
+				error(diagnostics, START_TARGET, transition, "a START state cannot be the target of a transition");
+			}
+			if (NodeKind.END.is(source)) {
+				error(diagnostics, END_SOURCE, transition, "an END state cannot be the source of a transition");
+			}
+			if (source.getFather_of() != target.getFather_of()) {
+				warning(diagnostics, SAME_PARENT, transition, "source and target should be in the same composite state");
+			}
+		}
+		ExpressionParser.Result expression = ExpressionParser.parse(transition.getTE());
+		for (Issue issue : expression.issues()) {
+			if (issue.getSeverity() == Severity.ERROR || issue.getSeverity() == Severity.WARNING) {
+				String message = "expression " + issue.getLineNumber() + ":" + issue.getColumn() + ": " + issue.getMessage();
+				diagnostics.add(new BasicDiagnostic(issue.getSeverity() == Severity.ERROR ? Diagnostic.ERROR : Diagnostic.WARNING,
+						DIAGNOSTIC_SOURCE, EXPRESSION, Labels.describe(transition) + ": " + message, new Object[] { transition, issue }));
+			}
+		}
+	}
+
+	private void validateVariable(Variable variable, DiagnosticChain diagnostics) {
+		String name = variable.getName();
+		if (name == null || !IDENTIFIER.matcher(name).matches()) {
+			error(diagnostics, VARIABLE_NAME, variable, "a variable's name starts with a letter or '_' and holds only letters, digits and '_'");
+		}
+		String type = variable.getType();
+		if (type == null || !MESSAGE_TYPE.matcher(type).matches()) {
+			error(diagnostics, VARIABLE_TYPE, variable, "a variable's type is topic.Kind.Message with Kind Signal, State or Data, as in behavior.State.HeadToBMessage");
+		}
+	}
+
+	private static void error(DiagnosticChain diagnostics, int code, EObject element, String message) {
+		diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, DIAGNOSTIC_SOURCE, code, Labels.describe(element) + ": " + message, new Object[] { element }));
+	}
+
+	private static void warning(DiagnosticChain diagnostics, int code, EObject element, String message) {
+		diagnostics.add(new BasicDiagnostic(Diagnostic.WARNING, DIAGNOSTIC_SOURCE, code, Labels.describe(element) + ": " + message, new Object[] { element }));
+	}
+
+	@Override
+	public boolean validate(EDataType dataType, Object value, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return true;
+	}
+}
