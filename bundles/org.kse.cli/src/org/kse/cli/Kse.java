@@ -1,0 +1,291 @@
+package org.kse.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.MalformedInputException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.validation.Issue;
+import org.kse.labeling.Labeler;
+import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
+import org.kse.transform.FormulaTransformation;
+import org.kse.validation.ModelValidation;
+
+/**
+ * The {@code kse} command line: transform, validate, label. Plain Java, so that it runs
+ * the same inside the Equinox application and in tests.
+ * <p>
+ * Exit codes: 0 success, 1 the input has errors, 2 the command could not run (usage, missing or unreadable file).
+ */
+public final class Kse {
+
+	public static final int OK = 0;
+	public static final int INVALID = 1;
+	public static final int FAILED = 2;
+
+	private static final String USAGE = """
+			usage: kse <command> [options]
+
+			commands:
+			  transform <formula> [-o model.stct] [--name NAME]
+			                      turn liveness formulas into a statechart model
+			  validate <model.stct>
+			                      check a model against the statechart rules
+			  label <model.stct> [-o out.stct]
+			                      renumber labels and rename states and transitions
+			  help [command]      show help
+
+			Run 'kse <command> --help' for a command's options.""";
+
+	private static final String TRANSFORM_HELP = """
+			usage: kse transform <formula> [-o model.stct] [--name NAME] [--quiet]
+
+			Reads liveness formulas (one 'name = expression' per line; the original tool's .txt
+			files with the model's name on the first line are read too) and writes the statechart
+			built by the rules of the original KSE. Problems are printed as file:line:column.
+			  -o, --output FILE   where to write the model (default: the formula file with .stct)
+			  --name NAME         the model's name (default: the file's first line, else the root formula)
+			  -q, --quiet         no progress lines""";
+
+	private static final String VALIDATE_HELP = """
+			usage: kse validate <model.stct>
+
+			Checks a statechart against the KSE rules and the transition-expression grammar.
+			Prints one diagnostic per line as 'file: label (name): message'.
+			Exit code 0 when the model has no error, 1 when it has errors.""";
+
+	private static final String LABEL_HELP = """
+			usage: kse label <model.stct> [-o out.stct]
+
+			Gives every state a unique hierarchical label in execution order (START first, then
+			the order a walk along the transitions reaches the states, END last), names auxiliary
+			states after their label and transitions '<source>_TO_<target>'. Labeling twice
+			changes nothing. Writes the model in place unless -o is given.""";
+
+	private final PrintStream out;
+	private final PrintStream err;
+	private boolean quiet;
+
+	public Kse(PrintStream out, PrintStream err) {
+		this.out = out;
+		this.err = err;
+	}
+
+	public int run(String... args) {
+		if (args.length == 0) {
+			err.println(USAGE);
+			return FAILED;
+		}
+		List<String> rest = List.of(args).subList(1, args.length);
+		try {
+			return switch (args[0]) {
+				case "transform" -> transform(rest);
+				case "validate" -> validate(rest);
+				case "label" -> label(rest);
+				case "help", "-h", "--help" -> help(rest);
+				default -> usage("unknown command '" + args[0] + "'");
+			};
+		} catch (UsageException e) {
+			return usage(e.getMessage());
+		} catch (IOException e) {
+			err.println("kse: " + e.getMessage());
+			return FAILED;
+		}
+	}
+
+	private int help(List<String> args) {
+		String topic = args.isEmpty() ? "" : args.get(0);
+		out.println(switch (topic) {
+			case "transform" -> TRANSFORM_HELP;
+			case "validate" -> VALIDATE_HELP;
+			case "label" -> LABEL_HELP;
+			default -> USAGE;
+		});
+		return OK;
+	}
+
+	private int usage(String problem) {
+		err.println("kse: " + problem);
+		err.println("Run 'kse --help' for usage.");
+		return FAILED;
+	}
+
+	private int transform(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output", "--name"), List.of("-q", "--quiet"));
+		if (options.help) {
+			out.println(TRANSFORM_HELP);
+			return OK;
+		}
+		Path formula = options.single("formula file");
+		quiet = options.flag("-q", "--quiet");
+		Path output = options.value("-o", "--output") != null ? Path.of(options.value("-o", "--output")) : withExtension(formula, "stct");
+		progress(1, 3, "reading and checking " + formula);
+		String text = readText(formula);
+		FormulaTransformation.Outcome outcome = FormulaTransformation.run(text, URI.createFileURI(formula.toAbsolutePath().toString()),
+				options.value("--name"));
+		int errors = report(formula, outcome.issues());
+		if (outcome.model() == null) {
+			err.println("kse: " + formula + ": " + errors + (errors == 1 ? " error" : " errors") + ", no model written");
+			return INVALID;
+		}
+		progress(2, 3, "built " + statistics(outcome.model()));
+		progress(3, 3, "writing " + output);
+		StatechartResources.save(outcome.model(), output);
+		out.println("wrote " + output + " (" + statistics(outcome.model()) + ")");
+		return OK;
+	}
+
+	private int validate(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of(), List.of());
+		if (options.help) {
+			out.println(VALIDATE_HELP);
+			return OK;
+		}
+		Path file = options.single("model file");
+		Model model = StatechartResources.load(file);
+		int errors = 0;
+		int warnings = 0;
+		for (Diagnostic diagnostic : ModelValidation.validate(model).getChildren()) {
+			boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
+			errors += error ? 1 : 0;
+			warnings += error ? 0 : 1;
+			out.println(file + ": " + withSeverity(diagnostic.getMessage(), error ? "error" : "warning"));
+		}
+		err.println(file + ": " + errors + (errors == 1 ? " error, " : " errors, ") + warnings + (warnings == 1 ? " warning" : " warnings"));
+		return errors == 0 ? OK : INVALID;
+	}
+
+	private int label(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output"), List.of());
+		if (options.help) {
+			out.println(LABEL_HELP);
+			return OK;
+		}
+		Path file = options.single("model file");
+		Path output = options.value("-o", "--output") != null ? Path.of(options.value("-o", "--output")) : file;
+		Model model = StatechartResources.load(file);
+		Labeler.label(model);
+		StatechartResources.save(model, output);
+		out.println("labeled " + output + " (" + statistics(model) + ")");
+		return OK;
+	}
+
+	/** "label (name): message" becomes "label (name): severity: message". */
+	private static String withSeverity(String message, String severity) {
+		int split = message.indexOf("): ");
+		return split < 0 ? severity + ": " + message : message.substring(0, split + 3) + severity + ": " + message.substring(split + 3);
+	}
+
+	private int report(Path file, List<Issue> issues) {
+		int errors = 0;
+		for (Issue issue : issues) {
+			if (issue.getSeverity() == Severity.IGNORE || issue.getSeverity() == Severity.INFO) {
+				continue;
+			}
+			boolean error = issue.getSeverity() == Severity.ERROR;
+			errors += error ? 1 : 0;
+			err.println(file + ":" + issue.getLineNumber() + ":" + issue.getColumn() + ": " + (error ? "error" : "warning") + ": " + issue.getMessage());
+		}
+		return errors;
+	}
+
+	private void progress(int step, int steps, String what) {
+		if (!quiet) {
+			err.println("[" + step + "/" + steps + "] " + what);
+		}
+	}
+
+	private static String statistics(Model model) {
+		int[] states = { 0 };
+		model.eAllContents().forEachRemaining(element -> states[0] += element instanceof org.kse.model.statechart.Node ? 1 : 0);
+		return states[0] + " states, " + model.getTransitions().size() + " transitions";
+	}
+
+	private static String readText(Path file) throws IOException {
+		try {
+			return Files.readString(file, StandardCharsets.UTF_8);
+		} catch (NoSuchFileException e) {
+			throw new IOException(file + ": no such file");
+		} catch (MalformedInputException e) {
+			throw new IOException(file + ": not a text file (it is not UTF-8)");
+		}
+	}
+
+	private static Path withExtension(Path file, String extension) {
+		String name = file.getFileName().toString();
+		int dot = name.lastIndexOf('.');
+		return file.resolveSibling((dot > 0 ? name.substring(0, dot) : name) + "." + extension);
+	}
+
+	static final class UsageException extends Exception {
+		private static final long serialVersionUID = 1L;
+
+		UsageException(String message) {
+			super(message);
+		}
+	}
+
+	/** Tiny option parser: positional arguments, options with one value, flags. */
+	private static final class Options {
+		final List<String> positional = new ArrayList<>();
+		final java.util.Map<String, String> values = new java.util.HashMap<>();
+		final java.util.Set<String> flags = new java.util.HashSet<>();
+		boolean help;
+
+		static Options parse(List<String> args, List<String> valued, List<String> flagNames) throws UsageException {
+			Options options = new Options();
+			for (int i = 0; i < args.size(); i++) {
+				String arg = args.get(i);
+				if (arg.equals("-h") || arg.equals("--help")) {
+					options.help = true;
+				} else if (valued.contains(arg)) {
+					if (i + 1 >= args.size()) {
+						throw new UsageException("option " + arg + " needs a value");
+					}
+					options.values.put(arg, args.get(++i));
+				} else if (flagNames.contains(arg)) {
+					options.flags.add(arg);
+				} else if (arg.startsWith("-") && arg.length() > 1) {
+					throw new UsageException("unknown option " + arg);
+				} else {
+					options.positional.add(arg);
+				}
+			}
+			return options;
+		}
+
+		Path single(String what) throws UsageException {
+			if (positional.size() != 1) {
+				throw new UsageException(positional.isEmpty() ? "missing " + what : "expected one " + what + ", got " + positional.size());
+			}
+			return Path.of(positional.get(0));
+		}
+
+		String value(String... names) {
+			for (String name : names) {
+				if (values.containsKey(name)) {
+					return values.get(name);
+				}
+			}
+			return null;
+		}
+
+		boolean flag(String... names) {
+			for (String name : names) {
+				if (flags.contains(name)) {
+					return true;
+				}
+			}
+			return false;
+		}
+	}
+}
