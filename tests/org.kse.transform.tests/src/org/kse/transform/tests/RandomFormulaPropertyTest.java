@@ -1,0 +1,116 @@
+package org.kse.transform.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Random;
+import java.util.Set;
+import java.util.stream.IntStream;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.TestFactory;
+import org.kse.labeling.Labeler;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.transform.FormulaTransformation;
+import org.kse.validation.ModelValidation;
+
+/**
+ * Property: any valid formula file transforms into a model that validates with no
+ * error, has unique labels, and that Label leaves labeled as it was. Formulas are
+ * generated from a fixed seed per case, so a failure names a reproducible formula.
+ */
+class RandomFormulaPropertyTest {
+
+	private static final int CASES = 300;
+
+	@TestFactory
+	Stream<DynamicTest> randomValidFormulasGiveValidModels() {
+		return IntStream.range(0, CASES).mapToObj(seed -> {
+			String formulas = new FormulaGenerator(new Random(seed)).file();
+			return DynamicTest.dynamicTest("seed " + seed, () -> check(formulas));
+		});
+	}
+
+	private static void check(String formulas) {
+		FormulaTransformation.Outcome outcome = Statecharts.run(formulas);
+		assertNotNull(outcome.model(), () -> formulas + "\nrejected: " + outcome.issues());
+		Model model = outcome.model();
+		Diagnostic diagnostic = ModelValidation.validate(model);
+		for (Diagnostic child : diagnostic.getChildren()) {
+			assertFalse(child.getSeverity() == Diagnostic.ERROR, () -> formulas + "\n" + child.getMessage());
+		}
+		List<Node> nodes = Statecharts.allNodes(model);
+		Set<String> labels = new HashSet<>();
+		for (Node node : nodes) {
+			assertTrue(labels.add(node.getLabel()), () -> formulas + "\nduplicate label " + node.getLabel());
+		}
+		List<String> before = nodes.stream().map(Node::getLabel).toList();
+		Labeler.label(model);
+		assertEquals(before, Statecharts.allNodes(model).stream().map(Node::getLabel).toList(),
+				() -> formulas + "\nLabel changed the transformation's labels");
+	}
+
+	/** Random valid formula files: capabilities only use later ones, so there is no recursion. */
+	static final class FormulaGenerator {
+		private final Random random;
+		private int activities;
+		private int capabilities;
+
+		FormulaGenerator(Random random) {
+			this.random = random;
+		}
+
+		String file() {
+			capabilities = 1 + random.nextInt(4);
+			StringBuilder out = new StringBuilder();
+			for (int i = 0; i < capabilities; i++) {
+				out.append("cap").append(i).append(" = ").append(expression(i, 0)).append('\n');
+			}
+			return out.toString();
+		}
+
+		private String expression(int capability, int depth) {
+			int terms = 1 + random.nextInt(depth > 1 ? 2 : 4);
+			String operator = List.of(".", "|", "||").get(random.nextInt(3));
+			StringBuilder out = new StringBuilder();
+			for (int i = 0; i < terms; i++) {
+				if (i > 0) {
+					out.append(' ').append(operator).append(' ');
+				}
+				out.append(term(capability, depth));
+			}
+			return out.toString();
+		}
+
+		private String term(int capability, int depth) {
+			int choice = random.nextInt(depth > 2 ? 2 : 7);
+			return switch (choice) {
+				case 0 -> "Act" + activities++;
+				case 1 -> capability + 1 < capabilities && random.nextBoolean() ? "cap" + (capability + 1 + random.nextInt(capabilities - capability - 1))
+						: "Act" + activities++;
+				case 2 -> "(" + expression(capability, depth + 1) + ")" + suffix(false);
+				case 3 -> "[" + expression(capability, depth + 1) + "]";
+				case 4 -> "Act" + activities++ + suffix(true);
+				case 5 -> "|" + "Act" + activities++ + "~|" + (1 + random.nextInt(3));
+				default -> "(" + expression(capability, depth + 1) + ")" + suffix(true);
+			};
+		}
+
+		private String suffix(boolean required) {
+			int choice = random.nextInt(required ? 3 : 4);
+			return switch (choice) {
+				case 0 -> "*";
+				case 1 -> "+";
+				case 2 -> "~";
+				default -> "";
+			};
+		}
+	}
+}
