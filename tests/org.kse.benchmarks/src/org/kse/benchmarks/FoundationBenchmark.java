@@ -1,0 +1,146 @@
+package org.kse.benchmarks;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.URI;
+import org.kse.labeling.Labeler;
+import org.kse.liveness.FormulaLoader;
+import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
+import org.kse.transform.FormulaToStatechart;
+import org.kse.transform.FormulaTransformation;
+import org.kse.validation.ModelValidation;
+
+/**
+ * Foundation benchmark (issue: transform, validate, load+save for a formula with
+ * 10,000 activities). Each figure is the median of several warm runs, printed with a
+ * baseline measured in the same run:
+ * <ul>
+ * <li>transform: against parsing and checking the same formulas (the work every tool does first);</li>
+ * <li>validate: against a plain walk over every element of the model;</li>
+ * <li>load+save: against reading and writing the same bytes as a plain file.</li>
+ * </ul>
+ * Run with {@code bench/foundation.sh}.
+ */
+public final class FoundationBenchmark {
+
+	private static final int CAPABILITIES = 100;
+	private static final int ACTIVITIES_PER_CAPABILITY = 100;
+	private static final int RUNS = 7;
+
+	public static void main(String[] args) throws Exception {
+		String formulas = generatedFormulas();
+		URI uri = URI.createURI("bench.liveness");
+		Path directory = Files.createTempDirectory("kse-bench");
+		Path modelFile = directory.resolve("bench.stct");
+		Path copyFile = directory.resolve("copy.stct");
+
+		System.out.printf(Locale.ROOT, "KSE foundation benchmark: %d activities in %d capabilities (%d lines, %d KiB of formulas), median of %d warm runs%n",
+				CAPABILITIES * ACTIVITIES_PER_CAPABILITY, CAPABILITIES, CAPABILITIES + 1, formulas.length() / 1024, RUNS);
+
+		double parse = median(() -> FormulaLoader.load(formulas, uri));
+		FormulaLoader.Result parsed = FormulaLoader.load(formulas, uri);
+		double build = median(() -> new FormulaToStatechart().transform(parsed.file(), "Bench"));
+		double transform = median(() -> FormulaTransformation.run(formulas, uri, "Bench"));
+		Model model = FormulaTransformation.run(formulas, uri, "Bench").model();
+		int[] counts = counts(model);
+		System.out.printf(Locale.ROOT, "model: %d states, %d transitions%n", counts[0], model.getTransitions().size());
+		report("parse+check formulas (baseline)", parse, 0);
+		report("build the statechart", build, parse);
+		report("transform (parse+check+build)", transform, parse);
+
+		double walk = median(() -> counts(model));
+		double validate = median(() -> ModelValidation.validate(model));
+		Diagnostic diagnostic = ModelValidation.validate(model);
+		long errors = diagnostic.getChildren().stream().filter(d -> d.getSeverity() == Diagnostic.ERROR).count();
+		report("walk every element (baseline)", walk, 0);
+		report("validate", validate, walk);
+		System.out.printf(Locale.ROOT, "  validation found %d errors%n", errors);
+
+		double label = median(() -> {
+			Labeler.label(model);
+			return null;
+		});
+		report("label", label, walk);
+
+		StatechartResources.save(model, modelFile);
+		byte[] bytes = Files.readAllBytes(modelFile);
+		double copy = median(() -> {
+			Files.write(copyFile, Files.readAllBytes(modelFile));
+			return null;
+		});
+		double loadSave = median(() -> {
+			Model loaded = StatechartResources.load(modelFile);
+			StatechartResources.save(loaded, copyFile);
+			return null;
+		});
+		System.out.printf(Locale.ROOT, "file: %d KiB%n", bytes.length / 1024);
+		report("read+write the bytes (baseline)", copy, 0);
+		report("load+save the model", loadSave, copy);
+
+		boolean goal = transform < 1000 && validate < 1000 && loadSave < 1000;
+		System.out.printf(Locale.ROOT, "goal (each under 1 s): %s%n", goal ? "met" : "NOT met");
+		Files.deleteIfExists(modelFile);
+		Files.deleteIfExists(copyFile);
+		Files.deleteIfExists(directory);
+	}
+
+	/** 100 capabilities of 100 activities each, every operator and suffix represented. */
+	static String generatedFormulas() {
+		StringBuilder out = new StringBuilder("Bench\nbench = ");
+		for (int c = 0; c < CAPABILITIES; c++) {
+			out.append(c == 0 ? "" : " . ").append("cap").append(c).append(c % 2 == 0 ? "+" : "");
+		}
+		out.append('\n');
+		String[] operators = { " . ", " | ", " || " };
+		String[] shapes = { "%s", "%s+", "[%s]", "%s*", "(%s)~", "|%s~|2" };
+		for (int c = 0; c < CAPABILITIES; c++) {
+			out.append("cap").append(c).append(" = ");
+			for (int a = 0; a < ACTIVITIES_PER_CAPABILITY; a++) {
+				if (a > 0) {
+					out.append(operators[c % 3]);
+				}
+				out.append(String.format(shapes[(a + c) % shapes.length], "Act" + c + "_" + a));
+			}
+			out.append('\n');
+		}
+		return out.toString();
+	}
+
+	private static int[] counts(Model model) {
+		int[] counts = new int[2];
+		model.eAllContents().forEachRemaining(element -> counts[element instanceof org.kse.model.statechart.Node ? 0 : 1]++);
+		return counts;
+	}
+
+	private static double median(Callable<?> work) throws Exception {
+		for (int i = 0; i < 4; i++) {
+			work.call();
+		}
+		double[] times = new double[RUNS];
+		for (int i = 0; i < RUNS; i++) {
+			long start = System.nanoTime();
+			work.call();
+			times[i] = (System.nanoTime() - start) / 1e6;
+		}
+		Arrays.sort(times);
+		return times[RUNS / 2];
+	}
+
+	private static void report(String what, double millis, double baseline) {
+		if (baseline > 0) {
+			System.out.printf(Locale.ROOT, "%-34s %9.1f ms  (%.2fx baseline)%n", what, millis, millis / baseline);
+		} else {
+			System.out.printf(Locale.ROOT, "%-34s %9.1f ms%n", what, millis);
+		}
+	}
+
+	private FoundationBenchmark() {
+	}
+
+}
