@@ -187,7 +187,10 @@ public final class Kse {
 
 	private int report(Path file, List<Issue> issues) {
 		int errors = 0;
-		for (Issue issue : issues) {
+		List<Issue> sorted = new ArrayList<>(issues);
+		sorted.sort(java.util.Comparator.comparingInt((Issue issue) -> issue.getLineNumber() == null ? 0 : issue.getLineNumber())
+				.thenComparingInt(issue -> issue.getColumn() == null ? 0 : issue.getColumn()));
+		for (Issue issue : sorted) {
 			if (issue.getSeverity() == Severity.IGNORE || issue.getSeverity() == Severity.INFO) {
 				continue;
 			}

@@ -60,15 +60,17 @@ public final class Labeler {
 	/** The children of a composite in label order. */
 	static List<Node> order(Node parent, Map<Node, List<Node>> successors) {
 		List<Node> children = parent.getChildren();
-		Node start = children.stream().filter(NodeKind.START::is).findFirst().orElse(null);
-		if (start == null || NodeKind.AND.is(parent)) {
+		if (NodeKind.AND.is(parent)) {
 			return new ArrayList<>(children);
 		}
+		Node start = children.stream().filter(NodeKind.START::is).findFirst().orElse(null);
 		Set<Node> siblings = new HashSet<>(children);
 		LinkedHashSet<Node> ordered = new LinkedHashSet<>();
-		ordered.add(start);
 		Deque<Node> frontier = new ArrayDeque<>();
-		frontier.add(start);
+		if (start != null) {
+			ordered.add(start);
+			frontier.add(start);
+		}
 		while (!frontier.isEmpty()) {
 			for (Node next : successors.getOrDefault(frontier.poll(), List.of())) {
 				if (siblings.contains(next) && !NodeKind.END.is(next) && ordered.add(next)) {

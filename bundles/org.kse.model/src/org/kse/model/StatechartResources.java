@@ -6,8 +6,11 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFileAttributeView;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.UUID;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
@@ -91,20 +94,36 @@ public final class StatechartResources {
 		save(model);
 	}
 
-	/** Serializes a model as the bytes its file would hold. */
+	/** Serializes a model as the bytes its file would hold, leaving the model where it was. */
 	public static byte[] toBytes(Model model) throws IOException {
-		Resource resource = model.eResource() != null ? model.eResource() : attach(model, Path.of("model.stct"));
 		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-		resource.save(bytes, saveOptions());
+		if (model.eResource() != null) {
+			model.eResource().save(bytes, saveOptions());
+			return bytes.toByteArray();
+		}
+		Resource scratch = newResourceSet().createResource(URI.createFileURI("model.stct"));
+		scratch.getContents().add(model);
+		try {
+			scratch.save(bytes, saveOptions());
+		} finally {
+			scratch.getContents().remove(model);
+		}
 		return bytes.toByteArray();
 	}
 
+	/**
+	 * Replaces {@code target} with {@code content} in one step. A new file gets the
+	 * permissions any new file gets (the umask applies); an existing file keeps its own.
+	 */
 	public static void writeAtomically(Path target, byte[] content) throws IOException {
 		Path directory = target.toAbsolutePath().getParent();
 		Files.createDirectories(directory);
-		Path temporary = Files.createTempFile(directory, "." + target.getFileName(), ".tmp");
+		Path temporary = directory.resolve("." + target.getFileName() + "." + UUID.randomUUID() + ".tmp");
 		try {
-			Files.write(temporary, content);
+			Files.write(temporary, content, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+			if (Files.exists(target) && Files.getFileStore(directory).supportsFileAttributeView(PosixFileAttributeView.class)) {
+				Files.setPosixFilePermissions(temporary, Files.getPosixFilePermissions(target));
+			}
 			try {
 				Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
 			} catch (AtomicMoveNotSupportedException e) {

@@ -1,0 +1,359 @@
+package org.kse.model.tests;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.kse.model.tests.Models.child;
+import static org.kse.model.tests.Models.root;
+import static org.kse.model.tests.Models.transition;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.kse.cli.Kse;
+import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.validation.ModelValidation;
+
+/** The {@code kse} command line, run in-process on files in a temporary directory. */
+class CommandLineTest {
+
+	@TempDir
+	Path directory;
+
+	record Run(int code, String out, String err) {
+		String all() {
+			return "exit " + code + "\n--- out:\n" + out + "--- err:\n" + err;
+		}
+	}
+
+	static Run kse(String... args) {
+		ByteArrayOutputStream out = new ByteArrayOutputStream();
+		ByteArrayOutputStream err = new ByteArrayOutputStream();
+		int code;
+		try (PrintStream outStream = new PrintStream(out, true, StandardCharsets.UTF_8);
+				PrintStream errStream = new PrintStream(err, true, StandardCharsets.UTF_8)) {
+			code = new Kse(outStream, errStream).run(args);
+		}
+		return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+	}
+
+	// ------------------------------------------------------------------ transform
+
+	@Test
+	void transformWritesTheModelNextToTheFormula() throws IOException {
+		Path formula = copyLegacy("Goalie/Goalie.txt");
+		Run run = kse("transform", formula.toString());
+
+		Path model = directory.resolve("Goalie.stct");
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertTrue(run.out().contains("wrote " + model), run.all());
+		assertTrue(run.out().contains("48 states, 46 transitions"), run.all());
+		assertTrue(run.err().contains("[1/3]") && run.err().contains("[3/3]"), "progress lines: " + run.all());
+		assertTrue(Files.isRegularFile(model), "the model next to the formula");
+
+		Model goalie = StatechartResources.load(model);
+		assertEquals("Goalie", goalie.getName(), "the model's name from the file's first line");
+		Node root = goalie.getNodes().get(0);
+		assertEquals("goalie", root.getName());
+		assertEquals("0", root.getLabel());
+		assertEquals(48, Models.allNodes(goalie).size());
+		assertEquals(46, goalie.getTransitions().size());
+		Node init = Models.byLabel(goalie, "0.2");
+		assertEquals("Init", init.getName());
+		assertEquals("BASIC", init.getType());
+		assertEquals("_open_group_playing_or_nonPlaying_close_group__one_or_more_times_", Models.byLabel(goalie, "0.3").getName());
+		assertEquals("Scan", Models.byLabel(goalie, "0.3.2.3.3.2").getName());
+		Diagnostic validation = ModelValidation.validate(goalie);
+		assertTrue(validation.getSeverity() < Diagnostic.ERROR, "the transformed model is valid:" + Models.render(validation));
+	}
+
+	@Test
+	void transformWritesWhereOutputSays() throws IOException {
+		Path formula = copyLegacy("Goalie/Goalie.txt");
+		Path output = directory.resolve("out/models/keeper.stct");
+		Run run = kse("transform", formula.toString(), "-o", output.toString(), "--name", "Keeper", "--quiet");
+
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertTrue(run.out().contains("wrote " + output), run.all());
+		assertFalse(run.err().contains("[1/3]"), "--quiet: no progress lines: " + run.all());
+		assertTrue(Files.isRegularFile(output));
+		assertFalse(Files.exists(directory.resolve("Goalie.stct")), "no model at the default place");
+		assertEquals("Keeper", StatechartResources.load(output).getName());
+
+		Path other = directory.resolve("other.stct");
+		Run longOption = kse("transform", "--output", other.toString(), formula.toString());
+		assertEquals(Kse.OK, longOption.code(), longOption.all());
+		Model byDefaultName = StatechartResources.load(other);
+		assertEquals("Goalie", byDefaultName.getName());
+		Model keeper = StatechartResources.load(output);
+		keeper.setName("Goalie");
+		assertTrue(Models.equal(byDefaultName, keeper), "-o and --name change nothing else");
+	}
+
+	@Test
+	void transformingTwiceGivesIdenticalFiles() throws IOException {
+		Path formula = copyLegacy("Goalie/Goalie.txt");
+		Path first = directory.resolve("first.stct");
+		Path second = directory.resolve("second.stct");
+		assertEquals(Kse.OK, kse("transform", formula.toString(), "-o", first.toString(), "-q").code());
+		assertEquals(Kse.OK, kse("transform", formula.toString(), "-o", second.toString(), "-q").code());
+		assertArrayEquals(Files.readAllBytes(first), Files.readAllBytes(second));
+	}
+
+	@Test
+	void formulaWithSyntaxErrorIsReportedAtItsPositionAndNothingIsWritten() throws IOException {
+		Path formula = Files.writeString(directory.resolve("broken.txt"), "Broken\nA = B . (C | D\n");
+		Run run = kse("transform", formula.toString());
+
+		assertEquals(Kse.INVALID, run.code(), run.all());
+		assertTrue(run.err().contains(formula + ":2:15: error: "), "the end of line 2, where ')' is missing: " + run.all());
+		assertTrue(Pattern.compile("(?m)^" + Pattern.quote(formula.toString()) + ":\\d+:\\d+: error: \\S.*$").matcher(run.err()).find(), run.all());
+		assertFalse(run.out().contains("wrote"), run.all());
+		assertEquals(List.of(formula), list(directory), "nothing written");
+	}
+
+	@Test
+	void mixedOperatorsAreAnErrorWithTheirColumn() throws IOException {
+		Path formula = Files.writeString(directory.resolve("mixed.txt"), "A = B . C | D\n");
+		Path output = directory.resolve("mixed-out.stct");
+		Run run = kse("transform", formula.toString(), "-o", output.toString());
+
+		assertEquals(Kse.INVALID, run.code(), run.all());
+		assertTrue(run.err().contains(formula + ":1:11: error: "), "the '|' at column 11: " + run.all());
+		assertFalse(Files.exists(output), "nothing written at -o");
+		assertEquals(List.of(formula), list(directory));
+	}
+
+	@Test
+	void formulaThatIsNotTextCannotBeRead() throws IOException {
+		Path formula = Files.write(directory.resolve("binary.txt"), new byte[] { (byte) 0xff, (byte) 0xfe, 0, 1, (byte) 0xc3 });
+		Run run = kse("transform", formula.toString());
+		assertEquals(Kse.FAILED, run.code(), run.all());
+		assertTrue(run.err().contains(formula.toString()), run.all());
+		assertEquals(List.of(formula), list(directory));
+	}
+
+	// ------------------------------------------------------------------ validate
+
+	@Test
+	void validateAcceptsTheLegacyGoalie() {
+		Path goalie = Models.legacy("Goalie/Goalie.stct");
+		Run run = kse("validate", goalie.toString());
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertFalse(run.out().contains("error"), run.all());
+		assertTrue(run.err().contains(goalie + ": 0 errors, 0 warnings"), run.all());
+	}
+
+	@Test
+	void validateReportsEachProblemAsFileLabelNameSeverityMessage() throws IOException {
+		Model model = Models.model("Parallel");
+		Node root = root(model, "Main", "0", "AND");
+		Node region = child(root, "Region", "0.1", "OR");
+		Node start = child(region, "0.1.1", "0.1.1", "START");
+		Node work = child(region, "Work", "0.1.2", "BASIC");
+		transition(model, start, work, "[a.Stat.B==1]");
+		Path file = directory.resolve("and-root.stct");
+		StatechartResources.save(model, file);
+
+		Run run = kse("validate", file.toString());
+		assertEquals(Kse.INVALID, run.code(), run.all());
+		List<String> lines = run.out().lines().toList();
+		assertEquals(List.of(file + ": 0 (Main): error: the root state must be an OR state, not AND",
+				file + ": 0.1.1->0.1.2 (0.1.1_TO_Work): error: expression 1:4: 'Stat' is not a message kind: use Signal, State or Data"), lines, run.all());
+		Pattern format = Pattern.compile(Pattern.quote(file.toString()) + ": \\S+ \\([^)]*\\): (error|warning): \\S.*");
+		lines.forEach(line -> assertTrue(format.matcher(line).matches(), line));
+		assertTrue(run.err().contains(file + ": 2 errors, 0 warnings"), run.all());
+	}
+
+	@Test
+	void validateWithOnlyWarningsSucceeds() throws IOException {
+		Model model = Models.simple();
+		Models.byName(model, "Work").setLabel("0.1");
+		Path file = directory.resolve("warned.stct");
+		StatechartResources.save(model, file);
+
+		Run run = kse("validate", file.toString());
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertEquals(List.of(file + ": 0.1 (Work): warning: the label is also used by 0.1 (0.1); run Label to renumber"), run.out().lines().toList(),
+				run.all());
+		assertTrue(run.err().contains("0 errors, 1 warning"), run.all());
+	}
+
+	@Test
+	void validateFindsTheTypoInTheLegacyGuiTester() {
+		Path tester = Models.legacy("GUITester/GUITester.stct");
+		Run run = kse("validate", tester.toString());
+		assertEquals(Kse.INVALID, run.code(), run.all());
+		assertTrue(run.out().startsWith(tester + ": 0.2.3.3.2->0.2.3.3.3 (GoToPositionTO0.2.3.3.3): error: expression 1:45: "), run.all());
+	}
+
+	@Test
+	void validateDoesNotChangeTheFile() throws IOException {
+		Path copy = copyLegacy("TestBehavior/TestBehaviorInitial.stct");
+		byte[] before = Files.readAllBytes(copy);
+		assertEquals(Kse.OK, kse("validate", copy.toString()).code());
+		assertArrayEquals(before, Files.readAllBytes(copy));
+		assertEquals(List.of(copy), list(directory));
+	}
+
+	// ------------------------------------------------------------------ label
+
+	@Test
+	void labelWritesTheFileAndLabelingAgainChangesNoByte() throws IOException {
+		Path file = copyLegacy("Goalie/Goalie.stct");
+		byte[] original = Files.readAllBytes(file);
+
+		Run first = kse("label", file.toString());
+		assertEquals(Kse.OK, first.code(), first.all());
+		assertTrue(first.out().contains("labeled " + file), first.all());
+		byte[] labeled = Files.readAllBytes(file);
+		assertFalse(java.util.Arrays.equals(original, labeled), "Goalie's labels had a hole (Init removed): labeling changes the file");
+		Model model = StatechartResources.load(file);
+		assertEquals("0.2.2.3.3.2", Models.byName(model, "Scan").getLabel());
+		assertTrue(model.getTransitions().stream().anyMatch(t -> "Scan_TO_Scan".equals(t.getName())));
+
+		Run second = kse("label", file.toString());
+		assertEquals(Kse.OK, second.code(), second.all());
+		assertArrayEquals(labeled, Files.readAllBytes(file), "labeling a labeled file changes nothing");
+		assertEquals(List.of(file), list(directory), "no temporary files left");
+	}
+
+	@Test
+	void labelWithOutputLeavesTheInputAlone() throws IOException {
+		Path file = copyLegacy("Goalie/Goalie.stct");
+		byte[] original = Files.readAllBytes(file);
+		Path output = directory.resolve("labeled.stct");
+
+		Run run = kse("label", file.toString(), "-o", output.toString());
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertTrue(run.out().contains("labeled " + output), run.all());
+		assertArrayEquals(original, Files.readAllBytes(file), "the input is not touched");
+		byte[] labeled = Files.readAllBytes(output);
+
+		Path again = directory.resolve("again.stct");
+		assertEquals(Kse.OK, kse("label", output.toString(), "--output", again.toString()).code());
+		assertArrayEquals(labeled, Files.readAllBytes(again));
+	}
+
+	@Test
+	void transformThenLabelIsStable() throws IOException {
+		Path formula = copyLegacy("Goalie/Goalie.txt");
+		Path model = directory.resolve("Goalie.stct");
+		assertEquals(Kse.OK, kse("transform", formula.toString(), "-q").code());
+		Model transformed = StatechartResources.load(model);
+
+		assertEquals(Kse.OK, kse("label", model.toString()).code());
+		byte[] labeled = Files.readAllBytes(model);
+		Model relabeled = StatechartResources.load(model);
+		for (int i = 0; i < Models.allNodes(transformed).size(); i++) {
+			assertEquals(Models.allNodes(transformed).get(i).getLabel(), Models.allNodes(relabeled).get(i).getLabel(),
+					"the transformation already numbers states in execution order");
+		}
+		assertEquals(Kse.OK, kse("label", model.toString()).code());
+		assertArrayEquals(labeled, Files.readAllBytes(model));
+	}
+
+	// ------------------------------------------------------------------ failures and help
+
+	@ParameterizedTest
+	@ValueSource(strings = { "transform", "validate", "label" })
+	void missingFileIsNamedAndExitsWithTwo(String command) throws IOException {
+		Path missing = directory.resolve("nowhere." + (command.equals("transform") ? "txt" : "stct"));
+		Run run = kse(command, missing.toString());
+		assertEquals(Kse.FAILED, run.code(), run.all());
+		assertTrue(run.err().contains(missing.toString()), run.all());
+		assertEquals(List.of(), list(directory), "nothing written");
+	}
+
+	@Test
+	void aFileThatIsNotAModelCannotBeValidatedOrLabeled() throws IOException {
+		Path formula = copyLegacy("Goalie/Goalie.txt");
+		for (String command : List.of("validate", "label")) {
+			Run run = kse(command, formula.toString());
+			assertEquals(Kse.FAILED, run.code(), run.all());
+			assertTrue(run.err().contains(formula + ": not a statechart model"), run.all());
+		}
+		assertEquals(List.of(formula), list(directory));
+	}
+
+	@Test
+	void unknownCommandExitsWithTwo() {
+		Run run = kse("frobnicate", "x.stct");
+		assertEquals(Kse.FAILED, run.code(), run.all());
+		assertTrue(run.err().contains("unknown command 'frobnicate'"), run.all());
+		assertTrue(run.err().contains("--help"), run.all());
+	}
+
+	@ParameterizedTest
+	@ValueSource(strings = { "transform", "validate", "label" })
+	void unknownOptionExitsWithTwo(String command) {
+		Run run = kse(command, "--frobnicate", directory.resolve("x").toString());
+		assertEquals(Kse.FAILED, run.code(), run.all());
+		assertTrue(run.err().contains("unknown option --frobnicate"), run.all());
+	}
+
+	@Test
+	void badUsageExitsWithTwo() {
+		Path file = directory.resolve("a.stct");
+		for (String[] args : new String[][] { {}, { "validate" }, { "label" }, { "transform" }, { "validate", file.toString(), file.toString() },
+				{ "label", file.toString(), "-o" }, { "transform", "f.txt", "--name" } }) {
+			Run run = kse(args);
+			assertEquals(Kse.FAILED, run.code(), () -> String.join(" ", args) + "\n" + run.all());
+			assertFalse(run.err().isBlank(), () -> String.join(" ", args) + ": says why");
+		}
+		assertTrue(kse().err().contains("usage: kse <command>"), "no arguments: the usage");
+	}
+
+	@ParameterizedTest
+	@ValueSource(strings = { "transform", "validate", "label" })
+	void helpOfEachCommand(String command) {
+		for (String[] args : new String[][] { { command, "--help" }, { command, "-h" }, { "help", command } }) {
+			Run run = kse(args);
+			assertEquals(Kse.OK, run.code(), run.all());
+			assertTrue(run.out().startsWith("usage: kse " + command + " "), run.all());
+		}
+		// help wins over a missing file argument
+		assertEquals(Kse.OK, kse(command, directory.resolve("missing").toString(), "--help").code());
+	}
+
+	@Test
+	void generalHelpListsTheCommands() {
+		for (String[] args : new String[][] { { "--help" }, { "-h" }, { "help" } }) {
+			Run run = kse(args);
+			assertEquals(Kse.OK, run.code(), run.all());
+			assertTrue(run.out().startsWith("usage: kse <command>"), run.all());
+			for (String command : List.of("transform", "validate", "label")) {
+				assertTrue(run.out().contains(command), run.all());
+			}
+		}
+	}
+
+	// ------------------------------------------------------------------ helpers
+
+	private Path copyLegacy(String relative) throws IOException {
+		Path copy = directory.resolve(Path.of(relative).getFileName().toString());
+		Files.write(copy, Files.readAllBytes(Models.legacy(relative)));
+		return copy;
+	}
+
+	private static List<Path> list(Path directory) throws IOException {
+		try (Stream<Path> files = Files.list(directory)) {
+			return files.sorted().toList();
+		}
+	}
+}
