@@ -14,6 +14,7 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
+import org.kse.generator.monas.MonasGenerator;
 import org.kse.labeling.Labeler;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
@@ -42,6 +43,8 @@ public final class Kse {
 			                      check a model against the statechart rules
 			  label <model.stct> [-o out.stct]
 			                      renumber labels and rename states and transitions
+			  generate <model.stct> <source-folder> [--logger]
+			                      write the Monas C++ of a model into a source tree
 			  help [command]      show help
 
 			Run 'kse <command> --help' for a command's options.""";
@@ -71,6 +74,16 @@ public final class Kse {
 			states after their label and transitions '<source>_TO_<target>'. Labeling twice
 			changes nothing. Writes the model in place unless -o is given.""";
 
+	private static final String GENERATE_HELP = """
+			usage: kse generate <model.stct> <source-folder> [--logger] [--quiet]
+
+			Writes the Monas C++ of a valid model into a source folder: statecharts/<Model>/
+			(the statechart class, one class per guard and per action list, CMakeLists.txt) and
+			activities/<Activity>/ skeletons. Activities that exist are never overwritten; files
+			whose content would not change are not touched. A model with errors is refused.
+			  --logger     conditions print their result when evaluated
+			  -q, --quiet  no progress lines""";
+
 	private final PrintStream out;
 	private final PrintStream err;
 	private boolean quiet;
@@ -91,6 +104,7 @@ public final class Kse {
 				case "transform" -> transform(rest);
 				case "validate" -> validate(rest);
 				case "label" -> label(rest);
+				case "generate" -> generate(rest);
 				case "help", "-h", "--help" -> help(rest);
 				default -> usage("unknown command '" + args[0] + "'");
 			};
@@ -108,6 +122,7 @@ public final class Kse {
 			case "transform" -> TRANSFORM_HELP;
 			case "validate" -> VALIDATE_HELP;
 			case "label" -> LABEL_HELP;
+			case "generate" -> GENERATE_HELP;
 			default -> USAGE;
 		});
 		return OK;
@@ -177,6 +192,35 @@ public final class Kse {
 		StatechartResources.save(model, output);
 		out.println("labeled " + output + " (" + statistics(model) + ")");
 		return OK;
+	}
+
+	private int generate(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of(), List.of("--logger", "-q", "--quiet"));
+		if (options.help) {
+			out.println(GENERATE_HELP);
+			return OK;
+		}
+		if (options.positional.size() != 2) {
+			throw new UsageException("expected a model file and a source folder");
+		}
+		quiet = options.flag("-q", "--quiet");
+		Path file = Path.of(options.positional.get(0));
+		Path folder = Path.of(options.positional.get(1));
+		Model model = StatechartResources.load(file);
+		try {
+			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger")),
+					(step, steps, what) -> progress(step, steps, what));
+			out.println("generated " + model.getName() + " into " + folder + ": " + report.written().size() + " written, "
+					+ report.unchanged().size() + " unchanged, " + report.kept().size() + " activities kept"
+					+ (report.removed().isEmpty() ? "" : ", " + report.removed().size() + " stale removed"));
+			return OK;
+		} catch (MonasGenerator.ModelHasErrorsException e) {
+			for (String error : e.errors()) {
+				err.println(file + ": " + withSeverity(error, "error"));
+			}
+			err.println("kse: " + file + ": " + e.errors().size() + (e.errors().size() == 1 ? " error" : " errors") + ", nothing generated");
+			return INVALID;
+		}
 	}
 
 	/** "label (name): message" becomes "label (name): severity: message". */

@@ -45,6 +45,16 @@ public final class ExpressionParser {
 		return Holder.INJECTOR;
 	}
 
+	/** Xtext wraps a parser's StackOverflowError in runtime exceptions. */
+	private static boolean causedByStackOverflow(Throwable e) {
+		for (Throwable cause = e; cause != null; cause = cause.getCause() == cause ? null : cause.getCause()) {
+			if (cause instanceof StackOverflowError) {
+				return true;
+			}
+		}
+		return false;
+	}
+
 	public static Result parse(String text) {
 		if (text == null || text.isBlank()) {
 			return new Result(null, List.of());
@@ -62,7 +72,7 @@ public final class ExpressionParser {
 		} catch (IOException | RuntimeException | StackOverflowError e) {
 			Issue.IssueImpl issue = new Issue.IssueImpl();
 			issue.setSeverity(Severity.ERROR);
-			issue.setMessage(e instanceof StackOverflowError ? "parentheses nested too deeply" : String.valueOf(e.getMessage()));
+			issue.setMessage(causedByStackOverflow(e) ? "parentheses nested too deeply" : String.valueOf(e.getMessage()));
 			issue.setLineNumber(1);
 			issue.setColumn(1);
 			issue.setOffset(0);

@@ -62,7 +62,17 @@ public final class FormulaLoader {
 	}
 
 	private static String describe(Throwable e) {
-		return e instanceof StackOverflowError ? "brackets nested too deeply" : String.valueOf(e.getMessage());
+		return causedByStackOverflow(e) ? "brackets nested too deeply" : String.valueOf(e.getMessage());
+	}
+
+	/** Xtext wraps a parser's StackOverflowError in runtime exceptions. */
+	static boolean causedByStackOverflow(Throwable e) {
+		for (Throwable cause = e; cause != null; cause = cause.getCause() == cause ? null : cause.getCause()) {
+			if (cause instanceof StackOverflowError) {
+				return true;
+			}
+		}
+		return false;
 	}
 
 	private static Issue issue(String message) {

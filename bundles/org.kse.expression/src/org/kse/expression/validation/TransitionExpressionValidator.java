@@ -10,6 +10,7 @@ import org.kse.expression.transitionExpression.Call;
 import org.kse.expression.transitionExpression.Constant;
 import org.kse.expression.transitionExpression.MessageAccess;
 import org.kse.expression.transitionExpression.MemberCall;
+import org.kse.expression.transitionExpression.Not;
 import org.kse.expression.transitionExpression.Publish;
 import org.kse.expression.transitionExpression.TimeoutAction;
 import org.kse.expression.transitionExpression.TransitionExpression;
@@ -81,8 +82,8 @@ public class TransitionExpressionValidator extends AbstractTransitionExpressionV
 
 	private static EObject firstOperand(EObject condition) {
 		EObject current = condition;
-		while (current instanceof Binary binary) {
-			current = binary.getLeft();
+		while (current instanceof Binary || current instanceof Not) {
+			current = current instanceof Binary binary ? binary.getLeft() : ((Not) current).getOperand();
 		}
 		return current;
 	}

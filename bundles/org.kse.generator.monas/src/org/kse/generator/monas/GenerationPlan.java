@@ -1,0 +1,129 @@
+package org.kse.generator.monas;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.emf.common.util.TreeIterator;
+import org.eclipse.emf.ecore.EObject;
+import org.kse.expression.ExpressionParser;
+import org.kse.expression.transitionExpression.Action;
+import org.kse.expression.transitionExpression.Condition;
+import org.kse.expression.transitionExpression.TransitionExpression;
+import org.kse.model.NodeKind;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.model.statechart.Transition;
+
+/**
+ * Every name the generated code uses, decided once per model so that the templates
+ * stay simple and the output is deterministic: the statechart class, one variable per
+ * state, the activity of each BASIC state, and the classes of each transition.
+ */
+public final class GenerationPlan {
+
+	/** A transition with its parsed expression and the C++ classes that carry it. */
+	public record PlannedTransition(String name, Node source, Node target, String expression, Condition condition,
+			List<Action> action, String conditionClass, String actionClass, String namespace) {
+	}
+
+	private final String modelName;
+	private final String className;
+	private final Node root;
+	private final List<Node> nodes = new ArrayList<>();
+	private final Map<Node, String> variables = new HashMap<>();
+	private final Map<String, Node> activities = new LinkedHashMap<>();
+	private final List<PlannedTransition> transitions = new ArrayList<>();
+
+	private GenerationPlan(Model model) {
+		this.modelName = model.getName() == null ? model.getNodes().get(0).getName() : model.getName();
+		this.className = CppNames.identifier(modelName);
+		this.root = model.getNodes().get(0);
+		Set<String> used = new HashSet<>();
+		add(root, used);
+		for (TreeIterator<EObject> it = root.eAllContents(); it.hasNext();) {
+			if (it.next() instanceof Node node) {
+				add(node, used);
+			}
+		}
+		String namespace = "kse_statechart_" + className;
+		Set<String> classes = new HashSet<>();
+		for (Transition transition : model.getTransitions()) {
+			String te = transition.getTE();
+			ExpressionParser.Result parsed = ExpressionParser.parse(te);
+			TransitionExpression expression = parsed.expression();
+			Condition condition = expression == null ? null : expression.getCondition();
+			List<Action> actions = expression == null || expression.getActions().isEmpty() ? null : List.copyOf(expression.getActions());
+			String base = CppNames.label(transition.getSource().getLabel()) + "_TO_" + CppNames.label(transition.getTarget().getLabel());
+			String unique = base;
+			for (int k = 2; !classes.add(unique); k++) {
+				unique = base + "_" + k;
+			}
+			transitions.add(new PlannedTransition(transition.getName() == null ? unique : transition.getName(), transition.getSource(),
+					transition.getTarget(), te, condition, actions, "TrCond_" + unique, "TrAction_" + unique, namespace));
+		}
+	}
+
+	private void add(Node node, Set<String> used) {
+		nodes.add(node);
+		String base = "Node_" + CppNames.label(node.getLabel());
+		String variable = base;
+		for (int k = 2; !used.add(variable); k++) {
+			variable = base + "_" + k;
+		}
+		variables.put(node, variable);
+		if (NodeKind.BASIC.is(node)) {
+			activities.putIfAbsent(activityName(node), node);
+		}
+	}
+
+	public static GenerationPlan of(Model model) {
+		return new GenerationPlan(model);
+	}
+
+	public String modelName() {
+		return modelName;
+	}
+
+	public String className() {
+		return className;
+	}
+
+	public Node root() {
+		return root;
+	}
+
+	/** Every state, parents before children (label order for a labeled model). */
+	public List<Node> nodes() {
+		return nodes;
+	}
+
+	public List<PlannedTransition> transitions() {
+		return transitions;
+	}
+
+	public String variable(Node node) {
+		return variables.get(node);
+	}
+
+	/** The engine's name of a state, as the original generator wrote it: Node_ and the name, or the label with '_' for dots. */
+	public String stateName(Node node) {
+		String name = node.getName();
+		boolean namedByLabel = name == null || name.isEmpty() || name.equals(node.getLabel());
+		return "Node_" + (namedByLabel ? CppNames.label(node.getLabel()) : name);
+	}
+
+	/** The activity a BASIC state runs: its name as a C++ identifier. */
+	public String activityName(Node node) {
+		return CppNames.identifier(node.getName() == null ? "Activity_" + CppNames.label(node.getLabel()) : node.getName());
+	}
+
+	/** Activity name → the first BASIC state that runs it. */
+	public Map<String, Node> activities() {
+		return activities;
+	}
+}

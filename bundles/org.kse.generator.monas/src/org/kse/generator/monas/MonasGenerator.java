@@ -1,0 +1,159 @@
+package org.kse.generator.monas;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.validation.ModelValidation;
+
+/**
+ * Writes the Monas C++ of a statechart into a source folder (reference §7):
+ * {@code statecharts/<Model>/} is owned by the generator and rewritten as needed;
+ * {@code activities/<Activity>/} is the user's: created once, never overwritten.
+ * A file whose content would not change is not touched, so builds stay incremental.
+ */
+public final class MonasGenerator {
+
+	/** Generation settings. {@code logger}: conditions print their result. */
+	public record Options(boolean logger) {
+		public static final Options DEFAULT = new Options(false);
+	}
+
+	/** What a generation did, by path relative to the source folder. */
+	public record Report(List<Path> written, List<Path> unchanged, List<Path> kept, List<Path> removed) {
+	}
+
+	/** Reports each step of a long generation: step of total, and what it is doing. */
+	@FunctionalInterface
+	public interface Progress {
+		Progress NONE = (step, total, what) -> {
+		};
+
+		void step(int step, int total, String what);
+	}
+
+	/** The model has errors; nothing was written. */
+	public static final class ModelHasErrorsException extends Exception {
+		private static final long serialVersionUID = 1L;
+		private final List<String> errors;
+
+		ModelHasErrorsException(List<String> errors) {
+			super("the model has " + errors.size() + (errors.size() == 1 ? " error" : " errors") + ": " + String.join("; ", errors));
+			this.errors = List.copyOf(errors);
+		}
+
+		public List<String> errors() {
+			return errors;
+		}
+	}
+
+	private MonasGenerator() {
+	}
+
+	public static Report generate(Model model, Path sourceFolder, Options options) throws IOException, ModelHasErrorsException {
+		return generate(model, sourceFolder, options, Progress.NONE);
+	}
+
+	public static Report generate(Model model, Path sourceFolder, Options options, Progress progress)
+			throws IOException, ModelHasErrorsException {
+		progress.step(1, 3, "validating " + model.getName());
+		List<String> errors = new ArrayList<>();
+		for (Diagnostic diagnostic : ModelValidation.validate(model).getChildren()) {
+			if (diagnostic.getSeverity() == Diagnostic.ERROR) {
+				errors.add(diagnostic.getMessage());
+			}
+		}
+		if (!errors.isEmpty()) {
+			throw new ModelHasErrorsException(errors);
+		}
+		progress.step(2, 3, "planning the C++ of " + model.getName());
+		GenerationPlan plan = GenerationPlan.of(model);
+		Path root = sourceFolder.toAbsolutePath().normalize();
+		Map<Path, String> owned = new LinkedHashMap<>();
+		Path chart = Path.of("statecharts", plan.className());
+		owned.put(chart.resolve(plan.className() + ".h"), MonasTemplates.statechartHeader(plan));
+		owned.put(chart.resolve(plan.className() + ".cpp"), MonasTemplates.statechartSource(plan));
+		owned.put(chart.resolve("CMakeLists.txt"), MonasTemplates.statechartCmake(plan));
+		for (GenerationPlan.PlannedTransition transition : plan.transitions()) {
+			if (transition.condition() != null) {
+				owned.put(chart.resolve("transitions").resolve(transition.conditionClass() + ".h"),
+						MonasTemplates.condition(plan, transition, options.logger()));
+			}
+			if (transition.action() != null && !MonasTemplates.timeoutOnly(transition.action())) {
+				owned.put(chart.resolve("transitions").resolve(transition.actionClass() + ".h"), MonasTemplates.action(plan, transition));
+			}
+		}
+		progress.step(3, 3, "writing into " + root);
+		List<Path> written = new ArrayList<>();
+		List<Path> unchanged = new ArrayList<>();
+		List<Path> kept = new ArrayList<>();
+		List<Path> removed = new ArrayList<>();
+		for (Map.Entry<Path, String> file : owned.entrySet()) {
+			(write(root, file.getKey(), file.getValue()) ? written : unchanged).add(file.getKey());
+		}
+		removeStale(root, chart.resolve("transitions"), owned, removed);
+		for (Map.Entry<String, Node> activity : plan.activities().entrySet()) {
+			String name = activity.getKey();
+			Path folder = Path.of("activities", name);
+			if (Files.exists(inside(root, folder))) {
+				kept.add(folder);
+				continue;
+			}
+			var inputs = activity.getValue().getVariables().stream().filter(v -> v.getType() != null && v.getType().split("\\.").length == 3).toList();
+			write(root, folder.resolve(name + ".h"), MonasTemplates.activityHeader(name, inputs));
+			write(root, folder.resolve(name + ".cpp"), MonasTemplates.activitySource(name, inputs));
+			write(root, folder.resolve("CMakeLists.txt"), MonasTemplates.activityCmake(name));
+			written.addAll(List.of(folder.resolve(name + ".h"), folder.resolve(name + ".cpp"), folder.resolve("CMakeLists.txt")));
+		}
+		return new Report(written, unchanged, kept, removed);
+	}
+
+	/** Writes only when the content differs; true when the file was written. */
+	private static boolean write(Path root, Path relative, String content) throws IOException {
+		Path target = inside(root, relative);
+		byte[] bytes = content.getBytes(StandardCharsets.UTF_8);
+		if (Files.isRegularFile(target) && Arrays.equals(Files.readAllBytes(target), bytes)) {
+			return false;
+		}
+		StatechartResources.writeAtomically(target, bytes);
+		return true;
+	}
+
+	/** Transition classes of earlier generations that the model no longer has. */
+	private static void removeStale(Path root, Path transitions, Map<Path, String> owned, List<Path> removed) throws IOException {
+		Path folder = inside(root, transitions);
+		if (!Files.isDirectory(folder)) {
+			return;
+		}
+		try (Stream<Path> files = Files.list(folder)) {
+			for (Path file : files.sorted().toList()) {
+				String name = file.getFileName().toString();
+				Path relative = transitions.resolve(name);
+				if ((name.startsWith("TrCond_") || name.startsWith("TrAction_")) && name.endsWith(".h") && !owned.containsKey(relative)) {
+					Files.delete(file);
+					removed.add(relative);
+				}
+			}
+		}
+	}
+
+	/** A path under the source folder; anything that would leave it is refused. */
+	static Path inside(Path root, Path relative) throws IOException {
+		Path resolved = root.resolve(relative).normalize();
+		if (!resolved.startsWith(root) || resolved.equals(root)) {
+			throw new IOException("refusing to write outside " + root + ": " + relative);
+		}
+		return resolved;
+	}
+}
