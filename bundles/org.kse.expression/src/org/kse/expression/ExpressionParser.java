@@ -63,9 +63,11 @@ public final class ExpressionParser {
 		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
 		XtextResource resource = (XtextResource) resourceSet.createResource(SYNTHETIC_URI);
 		try {
-			resource.load(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), Map.of(XtextResource.OPTION_ENCODING, "UTF-8"));
-			List<Issue> issues = new ArrayList<>(injector.getInstance(IResourceValidator.class)
-					.validate(resource, CheckMode.ALL, CancelIndicator.NullImpl));
+			resource.load(new ByteArrayInputStream(terminated(text).getBytes(StandardCharsets.UTF_8)), Map.of(XtextResource.OPTION_ENCODING, "UTF-8"));
+			List<Issue> issues = new ArrayList<>();
+			for (Issue issue : injector.getInstance(IResourceValidator.class).validate(resource, CheckMode.ALL, CancelIndicator.NullImpl)) {
+				issues.add(withinText(issue, text.length()));
+			}
 			TransitionExpression expression = resource.getContents().isEmpty() ? null
 					: (TransitionExpression) resource.getContents().get(0);
 			return new Result(expression, issues);
@@ -79,5 +81,35 @@ public final class ExpressionParser {
 			issue.setLength(0);
 			return new Result(null, List.of(issue));
 		}
+	}
+
+	/**
+	 * Xtext 2.42 drops (and logs) a syntax error whose end is the last character of a text
+	 * without a final line break; a final line break changes no position and avoids it.
+	 */
+	private static String terminated(String text) {
+		return text.endsWith("\n") ? text : text + "\n";
+	}
+
+	/** An issue at the end of the text (reported against the added line break) ends at the text's end. */
+	private static Issue withinText(Issue issue, int length) {
+		if (issue.getOffset() == null || issue.getLength() == null || issue.getOffset() + issue.getLength() <= length) {
+			return issue;
+		}
+		Issue.IssueImpl clamped = new Issue.IssueImpl();
+		clamped.setSeverity(issue.getSeverity());
+		clamped.setMessage(issue.getMessage());
+		clamped.setCode(issue.getCode());
+		clamped.setType(issue.getType());
+		clamped.setUriToProblem(issue.getUriToProblem());
+		clamped.setData(issue.getData());
+		clamped.setSyntaxError(issue.isSyntaxError());
+		clamped.setLineNumber(issue.getLineNumber());
+		clamped.setColumn(issue.getColumn());
+		clamped.setLineNumberEnd(issue.getLineNumberEnd());
+		clamped.setColumnEnd(issue.getColumnEnd());
+		clamped.setOffset(Math.min(issue.getOffset(), length));
+		clamped.setLength(Math.max(0, length - clamped.getOffset()));
+		return clamped;
 	}
 }

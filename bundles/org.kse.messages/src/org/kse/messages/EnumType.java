@@ -8,7 +8,7 @@ import java.util.Optional;
 import java.util.OptionalInt;
 
 /** An enum declaration with its values in declaration order. */
-public final class EnumType {
+public final class EnumType implements ProtoType {
 
 	private final String name;
 	private String fullName;
@@ -27,27 +27,33 @@ public final class EnumType {
 		this.parent = parent;
 	}
 
+	@Override
 	public String name() {
 		return name;
 	}
 
+	@Override
 	public String fullName() {
 		return fullName;
 	}
 
+	@Override
 	public Path file() {
 		return file;
 	}
 
+	@Override
 	public int line() {
 		return line;
 	}
 
+	@Override
 	public int column() {
 		return column;
 	}
 
 	/** The enclosing message, or empty for a top-level enum. */
+	@Override
 	public Optional<MessageType> parent() {
 		return Optional.ofNullable(parent);
 	}

@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.Optional;
 
 /** A message declaration; identity is the declaration itself, not its name. */
-public final class MessageType {
+public final class MessageType implements ProtoType {
 
 	private final String name;
 	private String fullName;
@@ -28,29 +28,35 @@ public final class MessageType {
 		this.parent = parent;
 	}
 
+	@Override
 	public String name() {
 		return name;
 	}
 
 	/** Package, enclosing messages and name joined by dots, e.g. {@code WorldInfo.Position}. */
+	@Override
 	public String fullName() {
 		return fullName;
 	}
 
+	@Override
 	public Path file() {
 		return file;
 	}
 
 	/** Position of the message name. */
+	@Override
 	public int line() {
 		return line;
 	}
 
+	@Override
 	public int column() {
 		return column;
 	}
 
 	/** The enclosing message, or empty for a top-level message. */
+	@Override
 	public Optional<MessageType> parent() {
 		return Optional.ofNullable(parent);
 	}

@@ -155,7 +155,8 @@ class ConditionCode {
 		}
 	}
 
-	def private String call(MemberCall member) '''«member.name»(«IF member.argument !== null»«member.argument.value»«ENDIF»)'''
+	/** protoc names C++ accessors after the field in lower case (myPosition → myposition()). */
+	def private String call(MemberCall member) '''«member.name.toLowerCase»(«IF member.argument !== null»«member.argument.value»«ENDIF»)'''
 
 	def private MessageRead read(MessageAccess access) {
 		val key = access.topic + '.' + access.kind + '.' + access.message

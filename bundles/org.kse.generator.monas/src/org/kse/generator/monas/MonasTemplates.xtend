@@ -192,12 +192,12 @@ class MonasTemplates {
 
 	def private static dispatch String statement(Publish publish) {
 		val members = publish.members
-		val path = members.take(members.size - 1).map['''mutable_«name»(«IF argument !== null»«ConditionCode.literal(argument)»«ENDIF»)->'''].join
+		val path = members.take(members.size - 1).map['''mutable_«name.toLowerCase»(«IF argument !== null»«ConditionCode.literal(argument)»«ENDIF»)->'''].join
 		val setter = members.last
 		'''
 			{
 				«CppNames.identifier(publish.message)» message;
-				message.«path»«setter.name»(«IF setter.argument !== null»«ConditionCode.literal(setter.argument)»«ENDIF»);
+				message.«path»«setter.name.toLowerCase»(«IF setter.argument !== null»«ConditionCode.literal(setter.argument)»«ENDIF»);
 				_blk->Publish(«CppNames.string(publish.topic)», kse::messaging::Kind::«publish.kind», message);
 			}
 		'''
@@ -247,7 +247,7 @@ class MonasTemplates {
 		int «activity»::Execute() {
 			«FOR input : inputs»
 				«val parts = input.type.split('\\.')»
-				const auto «CppNames.identifier(input.name)» = _blk->Read«parts.get(1)»<«CppNames.identifier(parts.get(2))»>(«CppNames.string(parts.get(0))»);
+				[[maybe_unused]] const auto «CppNames.identifier(input.name)» = _blk->Read«parts.get(1)»<«CppNames.identifier(parts.get(2))»>(«CppNames.string(parts.get(0))»);
 			«ENDFOR»
 			// TODO: the behaviour of «activity»
 			return 0;

@@ -356,4 +356,28 @@ class CommandLineTest {
 			return files.sorted().toList();
 		}
 	}
+
+	@Test
+	void generateWritesMonasCodeAndRefusesModelsWithErrors() throws IOException {
+		Path legacy = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+		Path source = directory.resolve("src");
+		Run run = kse("generate", "--quiet", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
+		assertEquals(0, run.code(), run::all);
+		assertTrue(run.out().contains("generated Goalie into"), run::all);
+		assertTrue(Files.isRegularFile(source.resolve("statecharts/Goalie/Goalie.cpp")));
+		assertTrue(Files.isRegularFile(source.resolve("activities/Scan/Scan.cpp")));
+		Run again = kse("generate", "-q", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
+		assertTrue(again.out().contains(" 0 written,"), again::all);
+		assertTrue(again.out().contains("7 activities kept"), again::all);
+
+		Model broken = StatechartResources.load(legacy.resolve("Goalie/Goalie.stct"));
+		broken.getNodes().get(0).setType("AND");
+		Path brokenFile = directory.resolve("Broken.stct");
+		StatechartResources.save(broken, brokenFile);
+		Run refused = kse("generate", brokenFile.toString(), directory.resolve("other").toString());
+		assertEquals(1, refused.code(), refused::all);
+		assertTrue(refused.err().contains(": error: the root state must be an OR state"), refused::all);
+		assertTrue(refused.err().contains("nothing generated"), refused::all);
+		assertFalse(Files.exists(directory.resolve("other")));
+	}
 }

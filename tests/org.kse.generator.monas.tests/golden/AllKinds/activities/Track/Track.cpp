@@ -1,0 +1,15 @@
+#include "Track.h"
+
+#include <statechart_engine/ActivityFactory.h>
+
+namespace {
+const statechart_engine::ActivityRegistrar<Track> registrar("Track");
+}
+
+void Track::UserInit() {
+}
+
+int Track::Execute() {
+	// TODO: the behaviour of Track
+	return 0;
+}

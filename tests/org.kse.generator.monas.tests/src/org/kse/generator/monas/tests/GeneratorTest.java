@@ -1,0 +1,225 @@
+package org.kse.generator.monas.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kse.generator.monas.MonasGenerator;
+import org.kse.generator.monas.MonasGenerator.ModelHasErrorsException;
+import org.kse.generator.monas.MonasGenerator.Options;
+import org.kse.generator.monas.MonasGenerator.Report;
+import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.model.statechart.StatechartFactory;
+
+/**
+ * The generator's promises: golden output for a model with every node and action kind,
+ * user code never overwritten, unchanged files never rewritten, nothing written outside
+ * the source folder, keywords made valid, models with errors refused.
+ * <p>
+ * Golden files live in {@code golden/}; run with {@code -Dkse.updateGolden=true} to
+ * rewrite them after an intended change, then read the diff.
+ */
+class GeneratorTest {
+
+	private static final Path BUNDLE = Path.of(System.getProperty("kse.repository", "../..")).resolve("tests/org.kse.generator.monas.tests");
+
+	private static Model allKinds() throws IOException {
+		return StatechartResources.load(BUNDLE.resolve("models/AllKinds.stct"));
+	}
+
+	private static Map<Path, String> tree(Path root) throws IOException {
+		Map<Path, String> files = new TreeMap<>();
+		try (Stream<Path> walk = Files.walk(root)) {
+			for (Path file : walk.filter(Files::isRegularFile).toList()) {
+				files.put(root.relativize(file), Files.readString(file, StandardCharsets.UTF_8));
+			}
+		}
+		return files;
+	}
+
+	@Test
+	void generatesTheGoldenFiles(@TempDir Path folder) throws Exception {
+		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		Map<Path, String> actual = tree(folder);
+		Path golden = BUNDLE.resolve("golden/AllKinds");
+		if (Boolean.getBoolean("kse.updateGolden")) {
+			for (Map.Entry<Path, String> file : actual.entrySet()) {
+				Files.createDirectories(golden.resolve(file.getKey()).getParent());
+				Files.writeString(golden.resolve(file.getKey()), file.getValue());
+			}
+		}
+		Map<Path, String> expected = tree(golden);
+		assertEquals(expected.keySet(), actual.keySet(), "the generated files");
+		for (Path file : expected.keySet()) {
+			assertEquals(expected.get(file), actual.get(file), file.toString());
+		}
+	}
+
+	@Test
+	void everyNodeKindAndActionKindIsInTheOutput(@TempDir Path folder) throws Exception {
+		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		String chart = Files.readString(folder.resolve("statecharts/AllKinds/AllKinds.cpp"));
+		for (String kind : List.of("Add<StartState>", "Add<EndState>", "Add<ConditionConnector>", "Add<AndState>", "Add<OrState>", "Add<BasicState>")) {
+			assertTrue(chart.contains(kind), kind);
+		}
+		assertTrue(chart.contains("std::make_unique<TimeoutAction>(\"behavior\", 100)"), "a lone timeout uses TimeoutAction");
+		assertTrue(chart.contains("StatechartRegistrar<AllKinds> registrar(\"AllKinds\")"));
+		String mixed = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrAction_0_3_TO_0_5.h"));
+		assertTrue(mixed.contains("message.set_command(\"InitPose\");"));
+		assertTrue(mixed.contains("_blk->Publish(\"motion\", kse::messaging::Kind::Signal, message);"));
+		assertTrue(mixed.contains("_blk->SetTimeout(\"behavior\", std::chrono::milliseconds(50));"));
+		String nullTest = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h"));
+		assertTrue(nullTest.contains("(msg0 == nullptr) || (msg0 != nullptr && msg0->ballfound() == 0)"), nullTest);
+		String signal = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_4_TO_0_5.h"));
+		assertTrue(signal.contains("_blk->ReadSignal<FallMessage>(\"worldstate\")"), signal);
+		String activity = Files.readString(folder.resolve("activities/Search/Search.cpp"));
+		assertTrue(activity.contains("[[maybe_unused]] const auto ball = _blk->ReadState<HeadToBMessage>(\"behavior\");"), activity);
+		assertTrue(activity.contains("[[maybe_unused]] const auto world = _blk->ReadData<WorldInfo>(\"worldstate\");"), activity);
+		assertTrue(activity.contains("_blk->Subscribe(\"behavior\");"), activity);
+	}
+
+	@Test
+	void loggerVariantAddsLoggingToConditionsOnly(@TempDir Path plain, @TempDir Path logged) throws Exception {
+		MonasGenerator.generate(allKinds(), plain, Options.DEFAULT);
+		MonasGenerator.generate(allKinds(), logged, new Options(true));
+		String condition = "statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h";
+		assertFalse(Files.readString(plain.resolve(condition)).contains("std::clog"));
+		assertTrue(Files.readString(logged.resolve(condition)).contains("std::clog << \"TrCond_0_2_TO_0_3 \""));
+		assertEquals(Files.readString(plain.resolve("statecharts/AllKinds/AllKinds.cpp")),
+				Files.readString(logged.resolve("statecharts/AllKinds/AllKinds.cpp")));
+	}
+
+	@Test
+	void existingActivityCodeIsNeverOverwritten(@TempDir Path folder) throws Exception {
+		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		Path search = folder.resolve("activities/Search/Search.cpp");
+		String mine = "// my goalie code\nint mine = 1;\n";
+		Files.writeString(search, mine);
+		Files.delete(folder.resolve("activities/Search/CMakeLists.txt"));
+		Report report = MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		assertEquals(mine, Files.readString(search));
+		assertFalse(Files.exists(folder.resolve("activities/Search/CMakeLists.txt")), "nothing is added inside an existing activity");
+		assertTrue(report.kept().contains(Path.of("activities", "Search")), report.kept().toString());
+	}
+
+	@Test
+	void unchangedFilesAreNotRewritten(@TempDir Path folder) throws Exception {
+		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		FileTime past = FileTime.fromMillis(1_000_000_000_000L);
+		List<Path> files;
+		try (Stream<Path> walk = Files.walk(folder)) {
+			files = walk.filter(Files::isRegularFile).toList();
+		}
+		for (Path file : files) {
+			Files.setLastModifiedTime(file, past);
+		}
+		Report report = MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		assertEquals(List.of(), report.written());
+		assertFalse(report.unchanged().isEmpty());
+		for (Path file : files) {
+			assertEquals(past, Files.getLastModifiedTime(file), file.toString());
+		}
+	}
+
+	@Test
+	void outputIsDeterministic(@TempDir Path first, @TempDir Path second) throws Exception {
+		MonasGenerator.generate(allKinds(), first, Options.DEFAULT);
+		MonasGenerator.generate(allKinds(), second, Options.DEFAULT);
+		assertEquals(tree(first), tree(second));
+	}
+
+	@Test
+	void namesCannotEscapeTheSourceFolder(@TempDir Path sandbox) throws Exception {
+		Path folder = sandbox.resolve("src");
+		Model model = allKinds();
+		model.setName("../../escape");
+		node(model, "0.3").setName("../../../evil");
+		Report report = MonasGenerator.generate(model, folder, Options.DEFAULT);
+		try (Stream<Path> walk = Files.walk(sandbox)) {
+			for (Path file : walk.filter(Files::isRegularFile).toList()) {
+				assertTrue(file.normalize().startsWith(folder), "written outside the source folder: " + file);
+			}
+		}
+		assertTrue(Files.isRegularFile(folder.resolve("statecharts/______escape/______escape.cpp")));
+		assertTrue(Files.isRegularFile(folder.resolve("activities/_________evil/_________evil.cpp")));
+		assertFalse(report.written().isEmpty());
+	}
+
+	@Test
+	void keywordsBecomeValidIdentifiers(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		model.setName("int");
+		node(model, "0.3").setName("class");
+		node(model, "0.4.1.2").setName("2fast");
+		MonasGenerator.generate(model, folder, Options.DEFAULT);
+		assertTrue(Files.readString(folder.resolve("statecharts/int_/int_.h")).contains("class int_ : public statechart_engine::IStatechart"));
+		assertTrue(Files.readString(folder.resolve("activities/class_/class_.h")).contains("class class_ : public statechart_engine::IActivity"));
+		assertTrue(Files.isRegularFile(folder.resolve("activities/_2fast/_2fast.cpp")));
+		assertTrue(Files.readString(folder.resolve("statecharts/int_/int_.cpp")).contains("ActivityFactory::Instance().Create(\"class_\")"));
+	}
+
+	@Test
+	void aModelWithErrorsIsRefusedAndNothingIsWritten(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		Node orphanStart = StatechartFactory.eINSTANCE.createNode();
+		orphanStart.setType("START");
+		orphanStart.setLabel("0.6");
+		orphanStart.setName("0.6");
+		model.getNodes().get(0).getChildren().add(orphanStart);
+		model.getTransitions().get(0).setTE("[worldstate.Stat.GameStateMessage==NULL]");
+		ModelHasErrorsException refused = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertEquals(2, refused.errors().size(), refused.errors().toString());
+		assertTrue(refused.errors().get(0).startsWith("0 (Striker): an OR state needs exactly one START state"), refused.errors().get(0));
+		assertTrue(refused.errors().get(1).contains("expression 1:13"), refused.errors().get(1));
+		try (Stream<Path> walk = Files.list(folder)) {
+			assertEquals(List.of(), walk.toList());
+		}
+	}
+
+	@Test
+	void staleTransitionClassesAreRemoved(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		MonasGenerator.generate(model, folder, Options.DEFAULT);
+		model.getTransitions().get(1).setTE("");
+		Report report = MonasGenerator.generate(model, folder, Options.DEFAULT);
+		assertEquals(List.of(Path.of("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h")), report.removed());
+		assertFalse(Files.exists(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h")));
+	}
+
+	@Test
+	void theLegacyGoalieGenerates(@TempDir Path folder) throws Exception {
+		Path legacy = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+		Report report = MonasGenerator.generate(StatechartResources.load(legacy.resolve("Goalie/Goalie.stct")), folder, Options.DEFAULT);
+		List<String> activities = new ArrayList<>();
+		try (Stream<Path> list = Files.list(folder.resolve("activities"))) {
+			list.map(p -> p.getFileName().toString()).sorted().forEach(activities::add);
+		}
+		assertEquals(List.of("ApproachBall", "GoToPosition", "Kick", "NoPlay", "Scan", "SpecialAction", "Stare"), activities);
+		assertTrue(report.written().size() > 40);
+	}
+
+	private static Node node(Model model, String label) {
+		for (var it = model.eAllContents(); it.hasNext();) {
+			if (it.next() instanceof Node node && label.equals(node.getLabel())) {
+				return node;
+			}
+		}
+		throw new AssertionError("no state " + label);
+	}
+}

@@ -1,0 +1,48 @@
+package org.kse.languages.tests;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import javax.xml.parsers.DocumentBuilderFactory;
+
+import org.w3c.dom.Element;
+import org.w3c.dom.NodeList;
+
+/** Text taken from the original KSE's Goalie model (set -Dkse.legacy to its directory). */
+final class Legacy {
+
+	static final Path DIRECTORY = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+
+	private Legacy() {
+	}
+
+	static Path goalieStatechart() {
+		Path path = DIRECTORY.resolve("Goalie/Goalie.stct");
+		assertTrue(Files.isRegularFile(path), () -> "legacy model missing: " + path.toAbsolutePath() + " (set -Dkse.legacy)");
+		return path;
+	}
+
+	/** The TE attribute of every transition of the legacy Goalie.stct, XML-unescaped, in file order. */
+	static List<String> goalieTransitionExpressions() {
+		try {
+			var factory = DocumentBuilderFactory.newInstance();
+			factory.setNamespaceAware(true);
+			var document = factory.newDocumentBuilder().parse(goalieStatechart().toFile());
+			NodeList transitions = document.getElementsByTagNameNS("*", "transitions");
+			List<String> result = new ArrayList<>();
+			for (int i = 0; i < transitions.getLength(); i++) {
+				Element transition = (Element) transitions.item(i);
+				if (transition.hasAttribute("TE")) {
+					result.add(transition.getAttribute("TE"));
+				}
+			}
+			return result;
+		} catch (Exception e) {
+			throw new AssertionError("cannot read " + goalieStatechart() + ": " + e, e);
+		}
+	}
+}
