@@ -8,6 +8,7 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
 import org.eclipse.emf.ecore.util.Diagnostician;
+import org.kse.messages.MessageCatalog;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.StatechartPackage;
 
@@ -17,8 +18,17 @@ public final class ModelValidation {
 	private ModelValidation() {
 	}
 
-	/** All diagnostics of the model, as children of the returned diagnostic, in document order. */
+	/** All diagnostics of the model, messages checked against the standard catalog. */
 	public static Diagnostic validate(Model model) {
+		return validate(model, null);
+	}
+
+	/**
+	 * All diagnostics of the model, as children of the returned diagnostic, in document
+	 * order; transition expressions and variables are checked against {@code catalog}
+	 * (the standard messages when null).
+	 */
+	public static Diagnostic validate(Model model, MessageCatalog catalog) {
 		EValidator.Registry registry = new EValidatorRegistryImpl();
 		registry.put(StatechartPackage.eINSTANCE, new StatechartValidator());
 		Diagnostician diagnostician = new Diagnostician(registry) {
@@ -29,6 +39,9 @@ public final class ModelValidation {
 		};
 		BasicDiagnostic result = diagnostician.createDefaultDiagnostic(model);
 		Map<Object, Object> context = new HashMap<>(diagnostician.createDefaultContext());
+		if (catalog != null) {
+			context.put(StatechartValidator.CATALOG, catalog);
+		}
 		diagnostician.validate(model, result, context);
 		return result;
 	}

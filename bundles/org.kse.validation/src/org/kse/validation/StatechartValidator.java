@@ -1,6 +1,7 @@
 package org.kse.validation;
 
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.regex.Pattern;
 
@@ -14,6 +15,8 @@ import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.expression.ExpressionParser;
+import org.kse.messages.MessageCatalog;
+import org.kse.messages.StandardMessages;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -45,6 +48,12 @@ public class StatechartValidator implements EValidator {
 	public static final int DANGLING = 12;
 	public static final int LEAF_CHILDREN = 13;
 	public static final int DUPLICATE_LABEL = 14;
+	public static final int MESSAGE = 15;
+
+	/** Context key: the {@link MessageCatalog} to check messages against (the standard one when absent). */
+	public static final Object CATALOG = MessageCatalog.class;
+	/** Context key: the list of known topics (the standard Monas topics when absent). */
+	public static final Object TOPICS = "org.kse.validation.topics";
 
 	private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z_]\\w*");
 	private static final Pattern MESSAGE_TYPE = Pattern.compile("[A-Za-z_]\\w*\\.(Signal|State|Data)\\.[A-Za-z_]\\w*");
@@ -64,9 +73,9 @@ public class StatechartValidator implements EValidator {
 		} else if (object instanceof Node node) {
 			validateNode(node, diagnostics, context);
 		} else if (object instanceof Transition transition) {
-			validateTransition(transition, diagnostics);
+			validateTransition(transition, diagnostics, context);
 		} else if (object instanceof Variable variable) {
-			validateVariable(variable, diagnostics);
+			validateVariable(variable, diagnostics, context);
 		}
 		return true;
 	}
@@ -125,7 +134,7 @@ public class StatechartValidator implements EValidator {
 		}
 	}
 
-	private void validateTransition(Transition transition, DiagnosticChain diagnostics) {
+	private void validateTransition(Transition transition, DiagnosticChain diagnostics, Map<Object, Object> context) {
 		Node source = transition.getSource();
 		Node target = transition.getTarget();
 		if (source == null || target == null) {
@@ -149,9 +158,26 @@ public class StatechartValidator implements EValidator {
 						DIAGNOSTIC_SOURCE, EXPRESSION, Labels.describe(transition) + ": " + message, new Object[] { transition, issue }));
 			}
 		}
+		if (expression.expression() != null && !expression.hasErrors()) {
+			for (MessageChecks.Problem problem : messageChecks(context).check(expression.expression(), transition.getTE())) {
+				error(diagnostics, MESSAGE, transition, "expression " + problem.line() + ":" + problem.column() + ": " + problem.message());
+			}
+		}
 	}
 
-	private void validateVariable(Variable variable, DiagnosticChain diagnostics) {
+	@SuppressWarnings("unchecked")
+	private static MessageChecks messageChecks(Map<Object, Object> context) {
+		if (context == null) {
+			return new MessageChecks(StandardMessages.catalog(), MessageCatalog.standardTopics());
+		}
+		return (MessageChecks) context.computeIfAbsent(MessageChecks.class, key -> {
+			MessageCatalog catalog = context.get(CATALOG) instanceof MessageCatalog given ? given : StandardMessages.catalog();
+			List<String> topics = context.get(TOPICS) instanceof List<?> given ? (List<String>) given : MessageCatalog.standardTopics();
+			return new MessageChecks(catalog, topics);
+		});
+	}
+
+	private void validateVariable(Variable variable, DiagnosticChain diagnostics, Map<Object, Object> context) {
 		String name = variable.getName();
 		if (name == null || !IDENTIFIER.matcher(name).matches()) {
 			error(diagnostics, VARIABLE_NAME, variable, "a variable's name starts with a letter or '_' and holds only letters, digits and '_'");
@@ -159,6 +185,12 @@ public class StatechartValidator implements EValidator {
 		String type = variable.getType();
 		if (type == null || !MESSAGE_TYPE.matcher(type).matches()) {
 			error(diagnostics, VARIABLE_TYPE, variable, "a variable's type is topic.Kind.Message with Kind Signal, State or Data, as in behavior.State.HeadToBMessage");
+		} else {
+			String[] parts = type.split("\\.");
+			String problem = messageChecks(context).checkType(parts[0], parts[2]);
+			if (problem != null) {
+				error(diagnostics, MESSAGE, variable, problem);
+			}
 		}
 	}
 

@@ -79,15 +79,34 @@ class ValidationRulesTest {
 						"same composite state", () -> nested(true), () -> nested(false).model()),
 				new Case("EXPRESSION: a bad message kind", StatechartValidator.EXPRESSION, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
 						"expression 1:4: 'Stat' is not a message kind", () -> withExpression("[a.Stat.B==1]"),
-						() -> withExpression("[a.State.B==1]").model()),
+						() -> withExpression("[behavior.State.HeadToBMessage.ballfound()==1]").model()),
 				new Case("EXPRESSION: an error on the second line", StatechartValidator.EXPRESSION, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
 						"expression 2:4: 'Stat' is not a message kind", () -> withExpression("[a.State.B==1 &&\n b.Stat.C==2]"),
-						() -> withExpression("[a.State.B==1 &&\n b.State.C==2]").model()),
+						() -> withExpression("[behavior.State.HeadToBMessage.ballfound()==1 &&\n worldstate.State.GameStateMessage.player_state()==2]").model()),
 				new Case("EXPRESSION: a syntax error", StatechartValidator.EXPRESSION, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)", "expression 1:",
-						() -> withExpression("[a.State.B==1"), () -> withExpression("[a.State.B==1]/process_messages;publish_all").model()),
+						() -> withExpression("[a.State.B==1"), () -> withExpression("[behavior.State.FallMessage.fall()==1]/process_messages;publish_all").model()),
 				new Case("EXPRESSION: TimeoutCheck not first (a warning)", StatechartValidator.EXPRESSION, Diagnostic.WARNING, "0.2->0.3 (Work_TO_0.3)",
-						"TimeoutCheck first", () -> withExpression("[a.State.B==1 && TimeoutCheck(behavior)]"),
-						() -> withExpression("[TimeoutCheck(behavior) && a.State.B==1]/TimeoutAction.behavior.250").model()),
+						"TimeoutCheck first", () -> withExpression("[behavior.State.FallMessage==NULL && TimeoutCheck(behavior)]"),
+						() -> withExpression("[TimeoutCheck(behavior) && behavior.State.FallMessage==NULL]/TimeoutAction.behavior.250").model()),
+				new Case("MESSAGE: an unknown topic", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"expression 1:2: unknown topic 'behaviour'", () -> withExpression("[behaviour.State.FallMessage==NULL]"),
+						() -> withExpression("[behavior.State.FallMessage==NULL]").model()),
+				new Case("MESSAGE: an unknown message type", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"expression 1:17: unknown message type 'FallMsg'", () -> withExpression("[behavior.State.FallMsg==NULL]"),
+						() -> withExpression("[behavior.State.FallMessage==NULL]").model()),
+				new Case("MESSAGE: an unknown field, on the second line", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"expression 2:70: 'WorldInfo' has no field 'ball'",
+						() -> withExpression("[TimeoutCheck(behavior) &&\n readyToKick(worldstate.Data.WorldInfo) && worldstate.Data.WorldInfo.ball(0).relativeX() > 0]"),
+						() -> withExpression("[TimeoutCheck(behavior) &&\n readyToKick(worldstate.Data.WorldInfo) && worldstate.Data.WorldInfo.balls(0).relativeX() > 0]").model()),
+				new Case("MESSAGE: a field of a number", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"'fall' of 'FallMessage' is not a message", () -> withExpression("[behavior.State.FallMessage.fall().x()==1]"),
+						() -> withExpression("[behavior.State.FallMessage.fall()==1]").model()),
+				new Case("MESSAGE: a publish with an unknown setter", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"'set_falls' sets no field of 'FallMessage'", () -> withExpression("/publish.behavior.State.FallMessage.set_falls(1)"),
+						() -> withExpression("/publish.behavior.State.FallMessage.set_fall(1)").model()),
+				new Case("MESSAGE: a variable of an unknown type", StatechartValidator.MESSAGE, Diagnostic.ERROR, "variable (ball)",
+						"unknown message type 'HeadMessage'", () -> withVariable("ball", "behavior.State.HeadMessage"),
+						() -> withVariable("ball", "behavior.State.HeadToBMessage").model()),
 				new Case("VARIABLE_NAME: a name starting with a digit", StatechartValidator.VARIABLE_NAME, Diagnostic.ERROR, "variable (1ball)",
 						"a variable's name", () -> withVariable("1ball", "behavior.State.HeadToBMessage"),
 						() -> withVariable("_ball1", "behavior.State.HeadToBMessage").model()),
@@ -149,7 +168,7 @@ class ValidationRulesTest {
 				rules.add(field.getInt(null));
 			}
 		}
-		assertEquals(14, rules.size(), "rule codes of StatechartValidator");
+		assertEquals(15, rules.size(), "rule codes of StatechartValidator");
 		Set<Integer> covered = cases().stream().map(Case::code).collect(Collectors.toCollection(TreeSet::new));
 		assertEquals(rules, covered, "every rule has a broken model in this test");
 	}
@@ -180,7 +199,7 @@ class ValidationRulesTest {
 		transition(model, work, start);
 		transition(model, end, work, "[x.Bad.Y==1]");
 		child(root, "0.4", "0.4", "END");
-		Models.variable(model, "9lives", "cat.State.Lives");
+		Models.variable(model, "9lives", "behavior.State.FallMessage");
 
 		List<Diagnostic> diagnostics = ModelValidation.validate(model).getChildren();
 		assertEquals(List.of(StatechartValidator.END_COUNT, StatechartValidator.START_TARGET, StatechartValidator.END_SOURCE,
