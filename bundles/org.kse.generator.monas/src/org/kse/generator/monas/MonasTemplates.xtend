@@ -23,6 +23,7 @@ class MonasTemplates {
 		#ifndef KSE_STATECHART_«plan.className.toUpperCase»_H
 		#define KSE_STATECHART_«plan.className.toUpperCase»_H
 
+		#include <statechart_engine/Factories.h>
 		#include <statechart_engine/Statechart.h>
 
 		/** The statechart «CppNames.comment(plan.modelName)», registered as "«plan.className»". */
@@ -46,8 +47,8 @@ class MonasTemplates {
 
 		#include <memory>
 
-		#include <statechart_engine/ActivityFactory.h>
-		#include <statechart_engine/StatechartFactory.h>
+		#include <statechart_engine/Factories.h>
+		#include <statechart_engine/TimeoutAction.h>
 		«FOR transition : plan.transitions.filter[condition !== null]»
 			#include "transitions/«transition.conditionClass».h"
 		«ENDFOR»
@@ -131,7 +132,7 @@ class MonasTemplates {
 			#include <kse/behavior/BehaviorConst.h>
 			#include <kse/behavior/Guards.h>
 			#include <kse/messages/all.h>
-			#include <statechart_engine/ICondition.h>
+			#include <statechart_engine/Interfaces.h>
 
 			namespace «transition.namespace» {
 
@@ -168,7 +169,7 @@ class MonasTemplates {
 
 		#include <kse/behavior/BehaviorConst.h>
 		#include <kse/messages/all.h>
-		#include <statechart_engine/IAction.h>
+		#include <statechart_engine/Interfaces.h>
 
 		namespace «transition.namespace» {
 
@@ -218,7 +219,7 @@ class MonasTemplates {
 		#include <string>
 
 		#include <kse/messages/all.h>
-		#include <statechart_engine/IActivity.h>
+		#include <statechart_engine/Interfaces.h>
 
 		/** The activity «activity»: written by you, never overwritten by KSE. */
 		class «activity» : public statechart_engine::IActivity {
@@ -232,7 +233,7 @@ class MonasTemplates {
 	def static String activitySource(String activity, List<Variable> inputs) '''
 		#include "«activity».h"
 
-		#include <statechart_engine/ActivityFactory.h>
+		#include <statechart_engine/Factories.h>
 
 		namespace {
 		const statechart_engine::ActivityRegistrar<«activity»> registrar("«activity»");

@@ -1,0 +1,129 @@
+# KseBehavior.cmake: CMake helpers for projects that build behaviours (generated statecharts,
+# activities, their own message types) against the KSE runtime.
+#
+# Included by kse_runtimeConfig.cmake, so after find_package(kse_runtime) these are available:
+#
+#   kse_protobuf_generate(SOURCES_VAR <var> HEADERS_VAR <var> PROTOS <file>...
+#                         OUTPUT_DIR <dir> [PROTO_ROOT <dir>] [IMPORT_DIRS <dir>...])
+#       Runs protoc (C++ output) on the given .proto files at build time and returns the paths
+#       of the generated .pb.cc / .pb.h in the two variables. Without PROTO_ROOT each file is
+#       compiled under its bare name and its <name>.pb.* land in OUTPUT_DIR; with PROTO_ROOT
+#       each file is compiled under its path relative to that root (its virtual name, which
+#       `import` statements and the generated #includes use) and lands in OUTPUT_DIR/<that path>.
+#       IMPORT_DIRS and KSE_RUNTIME_PROTO_DIR are on the import path: the standard messages
+#       are imported as "kse/messages/WorldInfo.proto" and so on.
+#
+#   kse_add_messages(<target> PROTOS <file>... [INCLUDE_PREFIX <prefix>] [IMPORT_DIRS <dir>...])
+#       A library <target> holding the generated code of the given .proto files, linked to
+#       protobuf; the headers are included as <INCLUDE_PREFIX/Name.pb.h> (default: <Name.pb.h>).
+#
+#   kse_add_behavior(<target> SOURCES <file>... [LIBRARIES <lib>...])
+#       An OBJECT library for generated statecharts and activities, linked to kse::runtime.
+#       Statecharts and activities register themselves from static objects
+#       (StatechartRegistrar / ActivityRegistrar); a static archive would let the linker drop
+#       those objects, an OBJECT library links every one of them into the final executable.
+
+include_guard(GLOBAL)
+
+function(kse_protobuf_generate)
+  cmake_parse_arguments(ARG "" "SOURCES_VAR;HEADERS_VAR;OUTPUT_DIR;PROTO_ROOT" "PROTOS;IMPORT_DIRS" ${ARGN})
+  if(NOT ARG_SOURCES_VAR OR NOT ARG_HEADERS_VAR OR NOT ARG_OUTPUT_DIR OR NOT ARG_PROTOS)
+    message(FATAL_ERROR "kse_protobuf_generate: SOURCES_VAR, HEADERS_VAR, OUTPUT_DIR and PROTOS are required")
+  endif()
+  if(TARGET protobuf::protoc)
+    set(_protoc protobuf::protoc)
+  elseif(Protobuf_PROTOC_EXECUTABLE)
+    set(_protoc ${Protobuf_PROTOC_EXECUTABLE})
+  else()
+    message(FATAL_ERROR "kse_protobuf_generate: protoc not found (install protobuf-compiler)")
+  endif()
+
+  set(_dirs "")
+  if(ARG_PROTO_ROOT)
+    get_filename_component(_root ${ARG_PROTO_ROOT} ABSOLUTE)
+    list(APPEND _dirs ${_root})
+  else()
+    foreach(_proto IN LISTS ARG_PROTOS)
+      get_filename_component(_abs ${_proto} ABSOLUTE)
+      get_filename_component(_dir ${_abs} DIRECTORY)
+      list(APPEND _dirs ${_dir})
+    endforeach()
+  endif()
+  foreach(_dir IN LISTS ARG_IMPORT_DIRS)
+    get_filename_component(_absdir ${_dir} ABSOLUTE)
+    list(APPEND _dirs ${_absdir})
+  endforeach()
+  if(KSE_RUNTIME_PROTO_DIR AND EXISTS "${KSE_RUNTIME_PROTO_DIR}")
+    list(APPEND _dirs ${KSE_RUNTIME_PROTO_DIR})
+  endif()
+  list(REMOVE_DUPLICATES _dirs)
+  set(_includes "")
+  foreach(_dir IN LISTS _dirs)
+    list(APPEND _includes "-I${_dir}")
+  endforeach()
+
+  set(_sources "")
+  set(_headers "")
+  foreach(_proto IN LISTS ARG_PROTOS)
+    get_filename_component(_abs ${_proto} ABSOLUTE)
+    get_filename_component(_name ${_abs} NAME_WE)
+    if(ARG_PROTO_ROOT)
+      file(RELATIVE_PATH _rel ${_root} ${_abs})
+      if(_rel MATCHES "^\\.\\.")
+        message(FATAL_ERROR "kse_protobuf_generate: ${_abs} is not under PROTO_ROOT ${_root}")
+      endif()
+      get_filename_component(_reldir ${_rel} DIRECTORY)
+      set(_outdir ${ARG_OUTPUT_DIR})
+      if(_reldir)
+        set(_outdir ${ARG_OUTPUT_DIR}/${_reldir})
+      endif()
+    else()
+      set(_outdir ${ARG_OUTPUT_DIR})
+    endif()
+    file(MAKE_DIRECTORY ${_outdir})
+    set(_cc ${_outdir}/${_name}.pb.cc)
+    set(_h ${_outdir}/${_name}.pb.h)
+    add_custom_command(
+      OUTPUT ${_cc} ${_h}
+      COMMAND ${_protoc} --cpp_out=${ARG_OUTPUT_DIR} ${_includes} ${_abs}
+      DEPENDS ${_abs} ${_protoc}
+      COMMENT "protoc ${_name}.proto"
+      VERBATIM)
+    list(APPEND _sources ${_cc})
+    list(APPEND _headers ${_h})
+  endforeach()
+  set(${ARG_SOURCES_VAR} ${_sources} PARENT_SCOPE)
+  set(${ARG_HEADERS_VAR} ${_headers} PARENT_SCOPE)
+endfunction()
+
+function(kse_add_messages target)
+  cmake_parse_arguments(ARG "" "INCLUDE_PREFIX" "PROTOS;IMPORT_DIRS" ${ARGN})
+  if(NOT ARG_PROTOS)
+    message(FATAL_ERROR "kse_add_messages(${target}): PROTOS is required")
+  endif()
+  set(_base ${CMAKE_CURRENT_BINARY_DIR}/${target}_generated)
+  if(ARG_INCLUDE_PREFIX)
+    set(_out ${_base}/${ARG_INCLUDE_PREFIX})
+  else()
+    set(_out ${_base})
+  endif()
+  kse_protobuf_generate(SOURCES_VAR _srcs HEADERS_VAR _hdrs PROTOS ${ARG_PROTOS}
+                        OUTPUT_DIR ${_out} IMPORT_DIRS ${ARG_IMPORT_DIRS})
+  add_library(${target} ${_srcs} ${_hdrs})
+  target_include_directories(${target} SYSTEM PUBLIC $<BUILD_INTERFACE:${_base}> PRIVATE ${_out})
+  target_link_libraries(${target} PUBLIC protobuf::libprotobuf)
+  if(TARGET kse::messages)
+    target_link_libraries(${target} PUBLIC kse::messages)
+  endif()
+  target_compile_features(${target} PUBLIC cxx_std_17)
+endfunction()
+
+function(kse_add_behavior target)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  if(NOT ARG_SOURCES)
+    message(FATAL_ERROR "kse_add_behavior(${target}): SOURCES is required")
+  endif()
+  add_library(${target} OBJECT ${ARG_SOURCES})
+  target_link_libraries(${target} PUBLIC kse::runtime ${ARG_LIBRARIES})
+  target_compile_features(${target} PUBLIC cxx_std_17)
+endfunction()

@@ -1,0 +1,140 @@
+#ifndef KSE_MESSAGING_BLACKBOARD_H
+#define KSE_MESSAGING_BLACKBOARD_H
+
+#include <chrono>
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <google/protobuf/message.h>
+
+#include "kse/messaging/Clock.h"
+#include "kse/messaging/Kind.h"
+#include "kse/messaging/MessageHub.h"
+
+namespace kse::messaging {
+
+/// One entry of a Data history.
+template <class T>
+struct Stamped {
+  TimePoint time;
+  std::shared_ptr<const T> message;
+};
+
+/// The messages one scope sees (the statechart root and every AND region own one).
+/// Messages are keyed by topic and protobuf full type name; each blackboard keeps its own
+/// signal queues, so two blackboards each see a signal once. Thread-safe.
+class Blackboard {
+ public:
+  using MessagePtr = std::shared_ptr<const google::protobuf::Message>;
+
+  /// Most recent entries kept per Data key.
+  static constexpr std::size_t kDataHistoryLimit = 100;
+  /// Unread signals kept per Signal key; when full the oldest unread one is dropped.
+  static constexpr std::size_t kSignalQueueLimit = 1000;
+
+  explicit Blackboard(MessageHub& hub, std::string name = {});
+  ~Blackboard();
+  Blackboard(const Blackboard&) = delete;
+  Blackboard& operator=(const Blackboard&) = delete;
+
+  /// Receive the messages published on a topic from now on (plus the topic's current State
+  /// messages). Idempotent.
+  void Subscribe(const std::string& topic);
+  bool IsSubscribed(const std::string& topic) const;
+
+  /// The last State message of that topic and type, or nullptr.
+  template <class T>
+  std::shared_ptr<const T> ReadState(const std::string& topic) {
+    return std::dynamic_pointer_cast<const T>(ReadStateMessage(topic, TypeName<T>()));
+  }
+
+  /// The oldest unread Signal of that topic and type, consumed by this read; nullptr when none.
+  template <class T>
+  std::shared_ptr<const T> ReadSignal(const std::string& topic) {
+    return std::dynamic_pointer_cast<const T>(ReadSignalMessage(topic, TypeName<T>()));
+  }
+
+  /// The newest Data entry of that topic and type, or nullptr.
+  template <class T>
+  std::shared_ptr<const T> ReadData(const std::string& topic) {
+    return std::dynamic_pointer_cast<const T>(ReadDataMessage(topic, TypeName<T>()));
+  }
+
+  /// Every Data entry of that topic and type stamped at or after `since`, oldest first.
+  template <class T>
+  std::vector<Stamped<T>> ReadDataHistory(const std::string& topic, TimePoint since) {
+    std::vector<Stamped<T>> out;
+    for (auto& entry : ReadDataHistoryMessages(topic, TypeName<T>(), since)) {
+      if (auto typed = std::dynamic_pointer_cast<const T>(entry.message)) {
+        out.push_back(Stamped<T>{entry.time, std::move(typed)});
+      }
+    }
+    return out;
+  }
+
+  /// Publishes a copy of the message through the hub (so this blackboard receives it too when
+  /// it is subscribed to the topic).
+  template <class T>
+  void Publish(const std::string& topic, Kind kind, const T& message) {
+    PublishCopy(topic, kind, message);
+  }
+
+  /// (Re)starts the timer of a topic: it expires `after` from now.
+  void SetTimeout(const std::string& topic, std::chrono::milliseconds after);
+  /// True when no timer on that topic is pending (never set, or its deadline has passed).
+  bool TimeoutExpired(const std::string& topic) const;
+  /// The earliest deadline of the pending timers, if any.
+  std::optional<TimePoint> NextDeadline() const;
+
+  // -- untyped access (what the templates use) --------------------------------------------
+  MessagePtr ReadStateMessage(const std::string& topic, const std::string& type_name) const;
+  MessagePtr ReadSignalMessage(const std::string& topic, const std::string& type_name);
+  MessagePtr ReadDataMessage(const std::string& topic, const std::string& type_name) const;
+  std::vector<Stamped<google::protobuf::Message>> ReadDataHistoryMessages(
+      const std::string& topic, const std::string& type_name, TimePoint since) const;
+  void PublishMessage(const std::string& topic, Kind kind, MessagePtr message);
+  void PublishCopy(const std::string& topic, Kind kind, const google::protobuf::Message& message);
+
+  /// Number of unread signals of that topic and type.
+  std::size_t PendingSignals(const std::string& topic, const std::string& type_name) const;
+
+  MessageHub& Hub() const noexcept { return hub_; }
+  const std::string& Name() const noexcept { return name_; }
+  TimePoint Now() const { return hub_.GetClock().Now(); }
+
+  template <class T>
+  static const std::string& TypeName() {
+    return T::descriptor()->full_name();
+  }
+
+ private:
+  friend class MessageHub;
+  void Deliver(const std::string& topic, Kind kind, const MessagePtr& message, TimePoint time);
+  static std::string Key(const std::string& topic, const std::string& type_name);
+
+  struct Entry {
+    MessagePtr message;
+    TimePoint time;
+  };
+
+  MessageHub& hub_;
+  const std::string name_;
+
+  mutable std::mutex mutex_;
+  std::set<std::string> topics_;
+  std::map<std::string, Entry> states_;
+  std::map<std::string, std::deque<MessagePtr>> signals_;
+  std::map<std::string, std::deque<Entry>> data_;
+  std::map<std::string, TimePoint> timers_;
+};
+
+}  // namespace kse::messaging
+
+#endif

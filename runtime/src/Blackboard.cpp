@@ -1,0 +1,155 @@
+#include "kse/messaging/Blackboard.h"
+
+#include <utility>
+
+namespace kse::messaging {
+
+Blackboard::Blackboard(MessageHub& hub, std::string name) : hub_(hub), name_(std::move(name)) {}
+
+Blackboard::~Blackboard() { hub_.Detach(this); }
+
+std::string Blackboard::Key(const std::string& topic, const std::string& type_name) {
+  std::string key;
+  key.reserve(topic.size() + 1 + type_name.size());
+  key.append(topic).push_back('\x1f');
+  key.append(type_name);
+  return key;
+}
+
+void Blackboard::Subscribe(const std::string& topic) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!topics_.insert(topic).second) {
+      return;
+    }
+  }
+  // Not under mutex_: the hub delivers retained state into this blackboard (hub, then board lock).
+  hub_.Attach(this, topic);
+}
+
+bool Blackboard::IsSubscribed(const std::string& topic) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return topics_.count(topic) != 0;
+}
+
+void Blackboard::Deliver(const std::string& topic, Kind kind, const MessagePtr& message,
+                         TimePoint time) {
+  std::string key = Key(topic, message->GetTypeName());
+  std::lock_guard<std::mutex> lock(mutex_);
+  switch (kind) {
+    case Kind::State:
+      states_[std::move(key)] = Entry{message, time};
+      break;
+    case Kind::Signal: {
+      auto& queue = signals_[std::move(key)];
+      if (queue.size() >= kSignalQueueLimit) {
+        queue.pop_front();
+      }
+      queue.push_back(message);
+      break;
+    }
+    case Kind::Data: {
+      auto& history = data_[std::move(key)];
+      if (history.size() >= kDataHistoryLimit) {
+        history.pop_front();
+      }
+      history.push_back(Entry{message, time});
+      break;
+    }
+  }
+}
+
+Blackboard::MessagePtr Blackboard::ReadStateMessage(const std::string& topic,
+                                                    const std::string& type_name) const {
+  const std::string key = Key(topic, type_name);
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = states_.find(key);
+  return it == states_.end() ? nullptr : it->second.message;
+}
+
+Blackboard::MessagePtr Blackboard::ReadSignalMessage(const std::string& topic,
+                                                     const std::string& type_name) {
+  const std::string key = Key(topic, type_name);
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = signals_.find(key);
+  if (it == signals_.end() || it->second.empty()) {
+    return nullptr;
+  }
+  MessagePtr message = std::move(it->second.front());
+  it->second.pop_front();
+  return message;
+}
+
+Blackboard::MessagePtr Blackboard::ReadDataMessage(const std::string& topic,
+                                                   const std::string& type_name) const {
+  const std::string key = Key(topic, type_name);
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = data_.find(key);
+  if (it == data_.end() || it->second.empty()) {
+    return nullptr;
+  }
+  return it->second.back().message;
+}
+
+std::vector<Stamped<google::protobuf::Message>> Blackboard::ReadDataHistoryMessages(
+    const std::string& topic, const std::string& type_name, TimePoint since) const {
+  const std::string key = Key(topic, type_name);
+  std::vector<Stamped<google::protobuf::Message>> out;
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = data_.find(key);
+  if (it == data_.end()) {
+    return out;
+  }
+  for (const Entry& entry : it->second) {
+    if (entry.time >= since) {
+      out.push_back(Stamped<google::protobuf::Message>{entry.time, entry.message});
+    }
+  }
+  return out;
+}
+
+std::size_t Blackboard::PendingSignals(const std::string& topic,
+                                       const std::string& type_name) const {
+  const std::string key = Key(topic, type_name);
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = signals_.find(key);
+  return it == signals_.end() ? 0 : it->second.size();
+}
+
+void Blackboard::PublishMessage(const std::string& topic, Kind kind, MessagePtr message) {
+  hub_.Publish(topic, kind, std::move(message));
+}
+
+void Blackboard::PublishCopy(const std::string& topic, Kind kind,
+                             const google::protobuf::Message& message) {
+  std::shared_ptr<google::protobuf::Message> copy(message.New());
+  copy->CopyFrom(message);
+  hub_.Publish(topic, kind, std::move(copy));
+}
+
+void Blackboard::SetTimeout(const std::string& topic, std::chrono::milliseconds after) {
+  const TimePoint deadline = Now() + after;
+  std::lock_guard<std::mutex> lock(mutex_);
+  timers_[topic] = deadline;
+}
+
+bool Blackboard::TimeoutExpired(const std::string& topic) const {
+  const TimePoint now = Now();
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = timers_.find(topic);
+  return it == timers_.end() || now >= it->second;
+}
+
+std::optional<TimePoint> Blackboard::NextDeadline() const {
+  const TimePoint now = Now();
+  std::optional<TimePoint> next;
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& timer : timers_) {
+    if (timer.second > now && (!next || timer.second < *next)) {
+      next = timer.second;
+    }
+  }
+  return next;
+}
+
+}  // namespace kse::messaging

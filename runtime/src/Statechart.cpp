@@ -1,0 +1,794 @@
+#include "statechart_engine/Statechart.h"
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "EngineCore.h"
+
+namespace statechart_engine {
+namespace detail {
+
+namespace {
+
+constexpr std::size_t kMaxConnectorChain = 64;
+constexpr std::size_t kStepsPerBatch = 1000;  // engine thread: check Stop() at least this often
+constexpr auto kIdleReevaluation = std::chrono::seconds(1);
+
+OrState* AsOr(State* state) { return static_cast<OrState*>(state); }
+const OrState* AsOr(const State* state) { return static_cast<const OrState*>(state); }
+
+std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
+
+}  // namespace
+
+EngineCore::EngineCore(Statechart& chart, kse::messaging::MessageHub& hub, Options options)
+    : hub_(hub), options_(options), root_blackboard_(hub, chart.Name()), chart_(chart) {}
+
+EngineCore::~EngineCore() {
+  Shutdown();
+  // Transitions first (their conditions and actions may refer to blackboards), then the
+  // states in reverse creation order.
+  owned_transitions_.clear();
+  while (!owned_states_.empty()) {
+    owned_states_.pop_back();
+  }
+}
+
+void EngineCore::Report(const std::string& what) const {
+  std::ostringstream line;
+  line << "[kse] statechart '" << chart_.Name() << "': " << what << '\n';
+  std::cerr << line.str() << std::flush;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ownership
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::AdoptState(std::unique_ptr<State> state) {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  if (IsActivated()) {
+    throw std::logic_error("statechart '" + chart_.Name() + "': cannot add state '" +
+                           state->Name() + "' after activation");
+  }
+  owned_states_.push_back(std::move(state));
+}
+
+void EngineCore::AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition) {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  if (IsActivated()) {
+    throw std::logic_error("statechart '" + chart_.Name() + "': cannot add transition '" +
+                           transition->Name() + "' after activation");
+  }
+  transition->Source()->outgoing_.push_back(transition.get());
+  owned_transitions_.push_back(std::move(transition));
+}
+
+std::vector<State*> EngineCore::States() const {
+  std::vector<State*> out;
+  CollectStates(&chart_, out);
+  return out;
+}
+
+std::vector<TransitionSegmentBase*> EngineCore::Transitions() const {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::vector<TransitionSegmentBase*> out;
+  out.reserve(owned_transitions_.size());
+  for (const auto& transition : owned_transitions_) {
+    out.push_back(transition.get());
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Structure
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::CollectStates(State* state, std::vector<State*>& out) const {
+  out.push_back(state);
+  for (State* child : state->children_) {
+    CollectStates(child, out);
+  }
+}
+
+void EngineCore::CheckStructure() const {
+  auto fail = [this](const std::string& why) {
+    throw std::logic_error("statechart '" + chart_.Name() + "': " + why);
+  };
+  for (const auto& owned : owned_states_) {
+    const State* top = owned.get();
+    while (top->parent_ != nullptr) {
+      top = top->parent_;
+    }
+    if (top != &chart_) {
+      fail("state " + Describe(owned.get()) + " is not inside this statechart");
+    }
+  }
+  for (State* state : states_) {
+    switch (state->kind_) {
+      case StateKind::Or: {
+        std::size_t starts = 0;
+        std::size_t ends = 0;
+        for (State* child : state->children_) {
+          starts += child->kind_ == StateKind::Start ? 1U : 0U;
+          ends += child->kind_ == StateKind::End ? 1U : 0U;
+        }
+        if (starts != 1) {
+          fail("OR state " + Describe(state) + " needs exactly one START child, it has " +
+               std::to_string(starts));
+        }
+        if (ends > 1) {
+          fail("OR state " + Describe(state) + " has more than one END child");
+        }
+        break;
+      }
+      case StateKind::And:
+        for (State* child : state->children_) {
+          if (child->kind_ != StateKind::Or) {
+            fail("AND state " + Describe(state) + " has a child that is not an OR state: " +
+                 Describe(child));
+          }
+        }
+        break;
+      default:
+        if (!state->children_.empty()) {
+          fail(std::string(ToString(state->kind_)) + " state " + Describe(state) +
+               " cannot have children");
+        }
+        break;
+    }
+  }
+}
+
+void EngineCore::ComputeTransition(TransitionSegmentBase& t) const {
+  auto fail = [this, &t](const std::string& why) {
+    throw std::logic_error("statechart '" + chart_.Name() + "': transition '" + t.Name() + "' " +
+                           why);
+  };
+  State* source = t.source_;
+  State* target = t.target_;
+  auto inside = [this](const State* state) {
+    while (state->parent_ != nullptr) {
+      state = state->parent_;
+    }
+    return state == &chart_;
+  };
+  if (!inside(source) || !inside(target)) {
+    fail("connects a state outside this statechart");
+  }
+  if (source->parent_ == nullptr || target->parent_ == nullptr) {
+    fail("cannot leave or enter the root");
+  }
+  if (target->kind_ == StateKind::Start) {
+    fail("enters a START state");
+  }
+  if (source->kind_ == StateKind::End) {
+    fail("leaves an END state");
+  }
+  // Lowest common ancestor of the parents = lowest state properly containing both ends.
+  State* a = source->parent_;
+  State* b = target->parent_;
+  while (a->depth_ > b->depth_) a = a->parent_;
+  while (b->depth_ > a->depth_) b = b->parent_;
+  while (a != b) {
+    a = a->parent_;
+    b = b->parent_;
+  }
+  // Leaving one region of an AND state for another leaves the whole AND state.
+  while (a->kind_ == StateKind::And) {
+    a = a->parent_;
+  }
+  t.lca_ = a;
+
+  State* exit_top = source;
+  while (exit_top->parent_ != a) {
+    exit_top = exit_top->parent_;
+  }
+  t.exit_top_ = exit_top;
+
+  t.entry_path_.clear();
+  for (State* s = target; s != a; s = s->parent_) {
+    t.entry_path_.push_back(s);
+  }
+  std::reverse(t.entry_path_.begin(), t.entry_path_.end());
+
+  State* scope_owner = a;
+  while (scope_owner->parent_ != nullptr &&
+         !(scope_owner->kind_ == StateKind::Or && AsOr(scope_owner)->IsRegion())) {
+    scope_owner = scope_owner->parent_;
+  }
+  t.scope_ = scope_owner->parent_ == nullptr ? &root_blackboard_
+                                             : AsOr(scope_owner)->region_blackboard_.get();
+  if (t.condition_) t.condition_->SetBlackboard(t.scope_);
+  if (t.action_) t.action_->SetBlackboard(t.scope_);
+}
+
+void EngineCore::Prepare() {
+  states_.clear();
+  CollectStates(&chart_, states_);
+  CheckStructure();
+
+  blackboards_.clear();
+  blackboards_.push_back(&root_blackboard_);
+  for (State* state : states_) {
+    if (state->kind_ == StateKind::Or) {
+      OrState* orState = AsOr(state);
+      orState->start_ = nullptr;
+      orState->end_ = nullptr;
+      for (State* child : state->children_) {
+        if (child->kind_ == StateKind::Start) orState->start_ = child;
+        if (child->kind_ == StateKind::End) orState->end_ = child;
+      }
+      if (orState->IsRegion()) {
+        if (!orState->region_blackboard_) {
+          orState->region_blackboard_ =
+              std::make_unique<kse::messaging::Blackboard>(hub_, orState->Name());
+        }
+        blackboards_.push_back(orState->region_blackboard_.get());
+      }
+    }
+    if (state->parent_ == nullptr) {
+      state->scope_ = &root_blackboard_;
+    } else if (state->kind_ == StateKind::Or && AsOr(state)->IsRegion()) {
+      state->scope_ = AsOr(state)->region_blackboard_.get();
+    } else {
+      state->scope_ = state->parent_->scope_;
+    }
+    if (state->kind_ == StateKind::Basic) {
+      if (IActivity* activity = static_cast<BasicState*>(state)->activity_.get()) {
+        activity->SetBlackboard(state->scope_);
+      }
+    }
+    std::stable_partition(state->outgoing_.begin(), state->outgoing_.end(),
+                          [](const TransitionSegmentBase* t) { return t->IsGuarded(); });
+  }
+  for (const auto& transition : owned_transitions_) {
+    ComputeTransition(*transition);
+  }
+}
+
+void EngineCore::CallUserInits() {
+  for (State* state : states_) {
+    if (state->kind_ != StateKind::Basic) continue;
+    IActivity* activity = static_cast<BasicState*>(state)->activity_.get();
+    if (activity == nullptr) continue;
+    try {
+      activity->UserInit();
+    } catch (const std::exception& e) {
+      ++activity_failures_;
+      Report("UserInit of the activity of state " + Describe(state) + " threw: " + e.what());
+    } catch (...) {
+      ++activity_failures_;
+      Report("UserInit of the activity of state " + Describe(state) + " threw");
+    }
+  }
+  for (const auto& transition : owned_transitions_) {
+    try {
+      if (transition->condition_) transition->condition_->UserInit();
+    } catch (const std::exception& e) {
+      ++guard_failures_;
+      Report("UserInit of the guard of '" + transition->Name() + "' threw: " + e.what());
+    } catch (...) {
+      ++guard_failures_;
+      Report("UserInit of the guard of '" + transition->Name() + "' threw");
+    }
+    try {
+      if (transition->action_) transition->action_->UserInit();
+    } catch (const std::exception& e) {
+      ++action_failures_;
+      Report("UserInit of the action of '" + transition->Name() + "' threw: " + e.what());
+    } catch (...) {
+      ++action_failures_;
+      Report("UserInit of the action of '" + transition->Name() + "' threw");
+    }
+  }
+}
+
+void EngineCore::Activate() {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  if (IsActivated()) {
+    return;
+  }
+  Prepare();
+  if (!options_.inline_activities && options_.worker_threads > 0 && !pool_) {
+    pool_ = std::make_unique<WorkerPool>(options_.worker_threads);
+  }
+  if (!listener_) {
+    listener_ = hub_.AddListener([this] { Wake(); });
+  }
+  CallUserInits();
+  activated_.store(true, std::memory_order_release);
+  EnterDefault(&chart_);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Stepping
+// ---------------------------------------------------------------------------------------------
+
+bool EngineCore::Step() {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  if (!IsActivated()) {
+    Activate();
+  }
+  return StepState(&chart_);
+}
+
+bool EngineCore::StepState(State* state) {
+  if (state->kind_ == StateKind::And) {
+    bool fired = false;
+    for (State* region : state->children_) {
+      fired = StepState(region) || fired;
+    }
+    return fired;
+  }
+  // An OR state: its active child first (inner transitions win), then the child's own
+  // transitions when it is not busy.
+  State* child = AsOr(state)->active_child_;
+  if (child == nullptr) {
+    return false;
+  }
+  if ((child->kind_ == StateKind::Or || child->kind_ == StateKind::And) && StepState(child)) {
+    return true;
+  }
+  if (IsBusy(child)) {
+    return false;
+  }
+  return TryTransitions(child);
+}
+
+bool EngineCore::IsBusy(const State* state) const {
+  switch (state->kind_) {
+    case StateKind::Basic:
+      return static_cast<const BasicState*>(state)->running_.load(std::memory_order_acquire);
+    case StateKind::Or: {
+      const OrState* orState = AsOr(state);
+      return orState->end_ == nullptr || orState->active_child_ != orState->end_;
+    }
+    case StateKind::And:
+      for (const State* region : state->children_) {
+        if (IsBusy(region)) return true;
+      }
+      return false;
+    default:
+      return false;
+  }
+}
+
+bool EngineCore::EvalGuard(TransitionSegmentBase* transition) {
+  ICondition* condition = transition->condition_.get();
+  if (condition == nullptr) {
+    return true;
+  }
+  try {
+    return condition->Eval();
+  } catch (const std::exception& e) {
+    ++guard_failures_;
+    Report("guard of '" + transition->Name() + "' threw (taken as false): " + e.what());
+  } catch (...) {
+    ++guard_failures_;
+    Report("guard of '" + transition->Name() + "' threw (taken as false)");
+  }
+  return false;
+}
+
+bool EngineCore::FindChain(State* connector, std::size_t depth) {
+  if (depth >= kMaxConnectorChain) {
+    Report("condition connector chain deeper than " + std::to_string(kMaxConnectorChain) +
+           " at " + Describe(connector) + ", not taken");
+    return false;
+  }
+  for (TransitionSegmentBase* next : connector->outgoing_) {
+    if (!EvalGuard(next)) continue;
+    chain_.push_back(next);
+    if (next->target_->kind_ != StateKind::Condition || FindChain(next->target_, depth + 1)) {
+      return true;
+    }
+    chain_.pop_back();
+  }
+  return false;
+}
+
+bool EngineCore::TryTransitions(State* state) {
+  for (TransitionSegmentBase* transition : state->outgoing_) {
+    if (!EvalGuard(transition)) continue;
+    if (transition->target_->kind_ != StateKind::Condition) {
+      Fire(transition);
+      return true;
+    }
+    chain_.clear();
+    chain_.push_back(transition);
+    if (!FindChain(transition->target_, 0)) {
+      continue;
+    }
+    // Every guard of the chain has been evaluated; now the segments fire in order.
+    std::vector<TransitionSegmentBase*> chain;
+    chain.swap(chain_);
+    for (TransitionSegmentBase* segment : chain) {
+      Fire(segment);
+    }
+    chain.clear();
+    chain_.swap(chain);  // keep the capacity
+    return true;
+  }
+  return false;
+}
+
+void EngineCore::Fire(TransitionSegmentBase* transition) {
+  Exit(transition->exit_top_);
+  if (IAction* action = transition->action_.get()) {
+    try {
+      action->Execute();
+    } catch (const std::exception& e) {
+      ++action_failures_;
+      Report("action of '" + transition->Name() + "' threw: " + e.what());
+    } catch (...) {
+      ++action_failures_;
+      Report("action of '" + transition->Name() + "' threw");
+    }
+  }
+  EnterAlong(transition->entry_path_, 0);
+  transitions_taken_.fetch_add(1, std::memory_order_relaxed);
+  if (observer_) {
+    try {
+      observer_(*transition);
+    } catch (const std::exception& e) {
+      ++action_failures_;
+      Report("observer threw on '" + transition->Name() + "': " + e.what());
+    } catch (...) {
+      ++action_failures_;
+      Report("observer threw on '" + transition->Name() + "'");
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Entering and leaving
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::Enter(State* state) {
+  if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
+    AsOr(state->parent_)->active_child_ = state;
+  }
+  state->active_.store(true, std::memory_order_relaxed);
+  try {
+    state->OnEntry();
+  } catch (const std::exception& e) {
+    ++action_failures_;
+    Report("OnEntry of " + Describe(state) + " threw: " + e.what());
+  } catch (...) {
+    ++action_failures_;
+    Report("OnEntry of " + Describe(state) + " threw");
+  }
+}
+
+void EngineCore::Complete(State* state) {
+  switch (state->kind_) {
+    case StateKind::Or:
+      EnterDefault(AsOr(state)->start_);
+      break;
+    case StateKind::And:
+      for (State* region : state->children_) {
+        EnterDefault(region);
+      }
+      break;
+    case StateKind::Basic:
+      Launch(static_cast<BasicState*>(state));
+      break;
+    default:
+      break;
+  }
+}
+
+void EngineCore::EnterDefault(State* state) {
+  Enter(state);
+  Complete(state);
+}
+
+void EngineCore::EnterAlong(const std::vector<State*>& path, std::size_t index) {
+  State* state = path[index];
+  Enter(state);
+  if (index + 1 == path.size()) {
+    Complete(state);
+    return;
+  }
+  State* next = path[index + 1];
+  if (state->kind_ == StateKind::And) {
+    for (State* region : state->children_) {
+      if (region == next) {
+        EnterAlong(path, index + 1);
+      } else {
+        EnterDefault(region);
+      }
+    }
+  } else {
+    EnterAlong(path, index + 1);
+  }
+}
+
+void EngineCore::Exit(State* state) {
+  if (state->kind_ == StateKind::Or) {
+    if (State* child = AsOr(state)->active_child_) {
+      Exit(child);
+    }
+  } else if (state->kind_ == StateKind::And) {
+    for (auto it = state->children_.rbegin(); it != state->children_.rend(); ++it) {
+      if ((*it)->IsActive()) {
+        Exit(*it);
+      }
+    }
+  }
+  try {
+    state->OnExit();
+  } catch (const std::exception& e) {
+    ++action_failures_;
+    Report("OnExit of " + Describe(state) + " threw: " + e.what());
+  } catch (...) {
+    ++action_failures_;
+    Report("OnExit of " + Describe(state) + " threw");
+  }
+  state->active_.store(false, std::memory_order_relaxed);
+  if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
+    AsOr(state->parent_)->active_child_ = nullptr;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Activities
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::Launch(BasicState* state) {
+  if (!state->activity_) {
+    return;
+  }
+  state->launches_.fetch_add(1, std::memory_order_relaxed);
+  if (!pool_) {
+    RunActivity(state);
+    return;
+  }
+  state->running_.store(true, std::memory_order_release);
+  running_activities_.fetch_add(1, std::memory_order_acq_rel);
+  pool_->Post([this, state] {
+    RunActivity(state);
+    FinishActivity(state);
+  });
+}
+
+void EngineCore::RunActivity(BasicState* state) {
+  IActivity* activity = state->activity_.get();
+  const char* failure = nullptr;
+  std::string message;
+  try {
+    activity->Execute();
+    return;
+  } catch (const std::exception& e) {
+    failure = "threw";
+    message = e.what();
+  } catch (...) {
+    failure = "threw a non-standard exception";
+  }
+  ++activity_failures_;
+  std::string name;
+  try {
+    name = activity->GetName();
+  } catch (...) {
+    name = "?";
+  }
+  Report("activity '" + name + "' of state " + Describe(state) + " " + failure +
+         (message.empty() ? std::string() : ": " + message));
+}
+
+void EngineCore::FinishActivity(BasicState* state) {
+  state->running_.store(false, std::memory_order_release);
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    running_activities_.fetch_sub(1, std::memory_order_acq_rel);
+    ++wake_generation_;
+  }
+  wake_cv_.notify_all();
+}
+
+void EngineCore::WaitForActivities() {
+  std::unique_lock<std::mutex> lock(wake_mutex_);
+  wake_cv_.wait(lock, [this] { return running_activities_.load(std::memory_order_acquire) == 0; });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Running
+// ---------------------------------------------------------------------------------------------
+
+bool EngineCore::RunUntilStable(std::size_t max_transitions) {
+  Activate();
+  const std::size_t first = transitions_taken_.load(std::memory_order_relaxed);
+  for (;;) {
+    std::uint64_t seen;
+    {
+      std::lock_guard<std::mutex> lock(wake_mutex_);
+      seen = wake_generation_;
+    }
+    while (Step()) {
+      if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
+        Report("RunUntilStable stopped after " + std::to_string(max_transitions) +
+               " transitions: the statechart does not settle");
+        return false;
+      }
+    }
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    if (running_activities_.load(std::memory_order_acquire) == 0) {
+      return true;
+    }
+    wake_cv_.wait(lock, [&] {
+      return wake_generation_ != seen || running_activities_.load(std::memory_order_acquire) == 0;
+    });
+  }
+}
+
+void EngineCore::Wake() {
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    ++wake_generation_;
+  }
+  wake_cv_.notify_all();
+}
+
+std::optional<kse::messaging::TimePoint> EngineCore::NextDeadline() const {
+  std::optional<kse::messaging::TimePoint> next;
+  for (const kse::messaging::Blackboard* board : blackboards_) {
+    auto deadline = board->NextDeadline();
+    if (deadline && (!next || *deadline < *next)) {
+      next = deadline;
+    }
+  }
+  return next;
+}
+
+void EngineCore::Start() {
+  Activate();
+  std::lock_guard<std::mutex> control(control_mutex_);
+  if (thread_.joinable()) {
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    stop_requested_ = false;
+  }
+  thread_ = std::thread([this] { Loop(); });
+  started_.store(true, std::memory_order_release);
+}
+
+void EngineCore::Stop() {
+  std::lock_guard<std::mutex> control(control_mutex_);
+  if (thread_.joinable()) {
+    {
+      std::lock_guard<std::mutex> lock(wake_mutex_);
+      stop_requested_ = true;
+    }
+    wake_cv_.notify_all();
+    thread_.join();
+    started_.store(false, std::memory_order_release);
+  }
+  WaitForActivities();
+}
+
+void EngineCore::Shutdown() {
+  Stop();
+  if (listener_) {
+    hub_.RemoveListener(*listener_);
+    listener_.reset();
+  }
+  pool_.reset();
+}
+
+void EngineCore::Loop() {
+  const kse::messaging::Clock& clock = hub_.GetClock();
+  for (;;) {
+    std::uint64_t seen;
+    {
+      std::lock_guard<std::mutex> lock(wake_mutex_);
+      if (stop_requested_) {
+        return;
+      }
+      seen = wake_generation_;
+    }
+    bool more = false;
+    std::optional<kse::messaging::TimePoint> deadline;
+    try {
+      std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+      std::size_t steps = 0;
+      while (StepState(&chart_)) {
+        if (++steps >= kStepsPerBatch) {
+          more = true;
+          break;
+        }
+      }
+      deadline = NextDeadline();
+    } catch (const std::exception& e) {
+      Report(std::string("engine step failed: ") + e.what());
+    } catch (...) {
+      Report("engine step failed");
+    }
+    if (more) {
+      continue;
+    }
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    auto woken = [&] { return stop_requested_ || wake_generation_ != seen; };
+    auto wait = std::chrono::duration_cast<std::chrono::steady_clock::duration>(kIdleReevaluation);
+    if (deadline) {
+      const auto until = *deadline - clock.Now();
+      wait = std::max(std::chrono::steady_clock::duration::zero(), std::min(wait, until));
+    }
+    wake_cv_.wait_for(lock, wait, woken);
+  }
+}
+
+std::vector<std::string> EngineCore::ActiveStates() const {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::vector<std::string> names;
+  for (const State* state : states_) {
+    if (state->IsActive()) {
+      names.push_back(state->Name());
+    }
+  }
+  return names;
+}
+
+void EngineCore::SetObserver(Statechart::Observer observer) {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  observer_ = std::move(observer);
+}
+
+}  // namespace detail
+
+// -------------------------------------------------------------------------------------------
+// Statechart
+// -------------------------------------------------------------------------------------------
+
+Statechart::Statechart(std::string name, kse::messaging::MessageHub& hub, Options options)
+    : OrState(std::move(name), nullptr),
+      core_(std::make_unique<detail::EngineCore>(*this, hub, options)) {}
+
+Statechart::~Statechart() {
+  core_->Shutdown();
+  core_.reset();
+}
+
+void Statechart::AdoptState(std::unique_ptr<State> state) { core_->AdoptState(std::move(state)); }
+
+void Statechart::AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition) {
+  if (transition->Source() == nullptr || transition->Target() == nullptr) {
+    throw std::invalid_argument("statechart '" + Name() + "': a transition needs a source and a target");
+  }
+  core_->AdoptTransition(std::move(transition));
+}
+
+void Statechart::Start() { core_->Start(); }
+void Statechart::Stop() { core_->Stop(); }
+bool Statechart::IsStarted() const noexcept { return core_->IsStarted(); }
+void Statechart::Activate() { core_->Activate(); }
+bool Statechart::IsActivated() const noexcept { return core_->IsActivated(); }
+bool Statechart::Step() { return core_->Step(); }
+
+void Statechart::RunUntilStable() { RunUntilStable(1000000); }
+bool Statechart::RunUntilStable(std::size_t max_transitions) {
+  return core_->RunUntilStable(max_transitions);
+}
+
+std::vector<std::string> Statechart::ActiveStates() const { return core_->ActiveStates(); }
+std::size_t Statechart::ActivityFailures() const noexcept { return core_->activity_failures_.load(); }
+std::size_t Statechart::GuardFailures() const noexcept { return core_->guard_failures_.load(); }
+std::size_t Statechart::ActionFailures() const noexcept { return core_->action_failures_.load(); }
+std::size_t Statechart::TransitionsTaken() const noexcept { return core_->transitions_taken_.load(); }
+std::size_t Statechart::RunningActivities() const noexcept {
+  return core_->running_activities_.load();
+}
+void Statechart::SetObserver(Observer observer) { core_->SetObserver(std::move(observer)); }
+void Statechart::Wake() { core_->Wake(); }
+kse::messaging::MessageHub& Statechart::Hub() const noexcept { return core_->hub_; }
+Blackboard& Statechart::RootBlackboard() const noexcept { return core_->root_blackboard_; }
+const Options& Statechart::GetOptions() const noexcept { return core_->options_; }
+std::vector<State*> Statechart::States() const { return core_->States(); }
+std::vector<TransitionSegmentBase*> Statechart::Transitions() const { return core_->Transitions(); }
+
+}  // namespace statechart_engine

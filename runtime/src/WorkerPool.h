@@ -1,0 +1,38 @@
+#ifndef KSE_RUNTIME_SRC_WORKER_POOL_H
+#define KSE_RUNTIME_SRC_WORKER_POOL_H
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace statechart_engine::detail {
+
+/// A fixed set of threads running posted tasks in FIFO order. Tasks must not throw.
+/// The destructor runs the tasks still queued, then joins the threads.
+class WorkerPool {
+ public:
+  explicit WorkerPool(std::size_t threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  void Post(std::function<void()> task);
+  std::size_t Size() const noexcept { return threads_.size(); }
+
+ private:
+  void Run();
+
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<std::function<void()>> tasks_;
+  bool stopping_ = false;
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace statechart_engine::detail
+
+#endif

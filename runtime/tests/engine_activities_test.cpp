@@ -1,0 +1,289 @@
+// BASIC states and their activities, inline and on the worker pool; END; failing activities.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+namespace kse_test {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+class Activities : public ::testing::TestWithParam<bool> {
+ protected:
+  bool Inlined() const { return GetParam(); }
+  Options Mode() const { return Inlined() ? Inline() : Pooled(); }
+
+  ManualClock clock;
+  MessageHub hub{clock};
+  Log log;
+};
+
+INSTANTIATE_TEST_SUITE_P(Modes, Activities, ::testing::Values(true, false),
+                         [](const ::testing::TestParamInfo<bool>& mode) {
+                           return mode.param ? "Inline" : "Pooled";
+                         });
+
+TEST_P(Activities, ActivityRunsOncePerEntry) {
+  Statechart chart("Root", hub, Mode());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto runs = Counter();
+  auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<CountingActivity>(runs));
+  auto* y = chart.Add<BasicState>("Y", &chart);
+  chart.AddTransition(start, x);
+  chart.AddTransition(x, y, Never());
+  chart.RunUntilStable();
+  for (int i = 0; i < 5; ++i) {
+    chart.Step();
+  }
+  chart.RunUntilStable();
+  EXPECT_EQ(runs->load(), 1);
+  EXPECT_EQ(x->Launches(), 1U);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "X"));
+}
+
+TEST_P(Activities, SelfLoopRunsTheActivityAgain) {
+  Statechart chart("Root", hub, Mode());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto runs = Counter();
+  auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<CountingActivity>(runs));
+  auto* end = chart.Add<EndState>("Root_3", &chart);
+  chart.AddTransition(start, x);
+  // x+ : loop while fewer than 3 runs, then leave.
+  chart.AddTransition(x, x, If([runs](Blackboard&) { return runs->load() < 3; }));
+  chart.AddTransition(x, end);
+  chart.RunUntilStable();
+  EXPECT_EQ(runs->load(), 3);
+  EXPECT_EQ(x->Launches(), 3U);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Root_3"));
+}
+
+TEST_P(Activities, ActivityUsesTheBlackboardOfItsScope) {
+  Statechart chart("Root", hub, Mode());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  class Publisher : public IActivity {
+   public:
+    int Execute() override {
+      HeadToBMessage message;
+      message.set_ballfound(7);
+      _blk->Publish("behavior", Kind::State, message);
+      return 0;
+    }
+    void UserInit() override { _blk->Subscribe("behavior"); }
+    std::string GetName() override { return "Publisher"; }
+  };
+  auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<Publisher>());
+  auto* seen = chart.Add<BasicState>("Seen", &chart);
+  chart.AddTransition(start, x);
+  chart.AddTransition(x, seen, If([](Blackboard& blk) {
+                        auto m = blk.ReadState<HeadToBMessage>("behavior");
+                        return m != nullptr && m->ballfound() == 7;
+                      }));
+  chart.RunUntilStable();
+  EXPECT_EQ(x->Activity()->GetBlackboard(), &chart.RootBlackboard());
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Seen"));
+}
+
+TEST_P(Activities, ThrowingActivityIsCountedAndTheEngineKeepsGoing) {
+  Statechart chart("Root", hub, Mode());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* bad = chart.Add<BasicState>("Bad", &chart, std::make_unique<ThrowingActivity>());
+  auto runs = Counter();
+  auto* good = chart.Add<BasicState>("Good", &chart, std::make_unique<CountingActivity>(runs));
+  chart.AddTransition(start, bad);
+  chart.AddTransition(bad, good);
+  ::testing::internal::CaptureStderr();
+  chart.RunUntilStable();
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(chart.ActivityFailures(), 1U);
+  EXPECT_EQ(runs->load(), 1);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Good"));
+  EXPECT_THAT(err, HasSubstr("activity 'Throwing' of state 'Bad' threw"));
+  EXPECT_THAT(err, HasSubstr("activity failure for the test"));
+}
+
+TEST_P(Activities, NullActivityFinishesAtOnce) {
+  Statechart chart("Root", hub, Mode());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  ::testing::internal::CaptureStderr();
+  auto* x = chart.Add<BasicState>("X", &chart, ActivityFactory::Instance().Create("NoSuchActivity_"));
+  EXPECT_THAT(::testing::internal::GetCapturedStderr(), HasSubstr("unknown activity 'NoSuchActivity_'"));
+  EXPECT_EQ(x->Activity(), nullptr);
+  auto* y = chart.Add<BasicState>("Y", &chart);
+  chart.AddTransition(start, x);
+  chart.AddTransition(x, y);
+  chart.RunUntilStable();
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Y"));
+  EXPECT_EQ(chart.ActivityFailures(), 0U);
+}
+
+TEST_P(Activities, UserInitRunsOnceForEveryPartBeforeTheFirstStep) {
+  struct Counts {
+    std::atomic<int> activity{0}, condition{0}, action{0};
+  };
+  auto counts = std::make_shared<Counts>();
+  class A : public IActivity {
+   public:
+    explicit A(std::shared_ptr<Counts> c) : c_(std::move(c)) {}
+    void UserInit() override { ++c_->activity; }
+    int Execute() override { return 0; }
+    std::string GetName() override { return "A"; }
+    std::shared_ptr<Counts> c_;
+  };
+  class C : public ICondition {
+   public:
+    explicit C(std::shared_ptr<Counts> c) : c_(std::move(c)) {}
+    void UserInit() override {
+      ++c_->condition;
+      _blk->Subscribe("worldstate");
+    }
+    bool Eval() override { return true; }
+    std::shared_ptr<Counts> c_;
+  };
+  class Act : public IAction {
+   public:
+    explicit Act(std::shared_ptr<Counts> c) : c_(std::move(c)) {}
+    void UserInit() override { ++c_->action; }
+    void Execute() override {}
+    std::shared_ptr<Counts> c_;
+  };
+  Statechart chart("Root", hub, Mode());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<A>(counts));
+  chart.AddTransition(start, x, std::make_unique<C>(counts), std::make_unique<Act>(counts));
+  chart.Activate();
+  EXPECT_EQ(counts->activity.load(), 1);
+  EXPECT_EQ(counts->condition.load(), 1);
+  EXPECT_EQ(counts->action.load(), 1);
+  EXPECT_TRUE(chart.RootBlackboard().IsSubscribed("worldstate"));
+  chart.RunUntilStable();
+  chart.Activate();
+  EXPECT_EQ(counts->activity.load(), 1);
+}
+
+// -- pooled only ---------------------------------------------------------------------------
+
+class PooledActivities : public ::testing::Test {
+ protected:
+  ManualClock clock;
+  MessageHub hub{clock};
+};
+
+TEST_F(PooledActivities, TransitionsLeavingABusyStateAreNotTried) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto gate = std::make_shared<Gate>();
+  auto started = Counter();
+  auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<BlockingActivity>(gate, started));
+  auto* y = chart.Add<BasicState>("Y", &chart);
+  auto evals = Counter();
+  chart.AddTransition(start, x);
+  chart.AddTransition(x, y, When(Flag(true), evals));
+
+  chart.Activate();
+  ASSERT_TRUE(chart.Step());
+  ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
+  EXPECT_TRUE(x->IsRunning());
+  EXPECT_EQ(chart.RunningActivities(), 1U);
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_FALSE(chart.Step());
+  }
+  EXPECT_EQ(evals->load(), 0);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "X"));
+
+  gate->Open();
+  chart.RunUntilStable();  // waits for the activity, then steps
+  EXPECT_EQ(evals->load(), 1);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Y"));
+  EXPECT_FALSE(x->IsRunning());
+  EXPECT_EQ(chart.RunningActivities(), 0U);
+}
+
+TEST_F(PooledActivities, OtherRegionsKeepSteppingWhileOneActivityRuns) {
+  Statechart chart("Root", hub, Pooled(2));
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* both = chart.Add<AndState>("Both", &chart);
+  auto* r1 = chart.Add<OrState>("R1", both);
+  auto* r1Start = chart.Add<StartState>("R1_1", r1);
+  auto gate = std::make_shared<Gate>();
+  auto started = Counter();
+  auto* slow = chart.Add<BasicState>("Slow", r1, std::make_unique<BlockingActivity>(gate, started));
+  auto* r1End = chart.Add<EndState>("R1_3", r1);
+  auto* r2 = chart.Add<OrState>("R2", both);
+  auto* r2Start = chart.Add<StartState>("R2_1", r2);
+  auto* a = chart.Add<BasicState>("A", r2);
+  auto* b = chart.Add<BasicState>("B", r2);
+  chart.AddTransition(start, both);
+  chart.AddTransition(r1Start, slow);
+  chart.AddTransition(slow, r1End);
+  chart.AddTransition(r2Start, a);
+  chart.AddTransition(a, b);
+
+  chart.Activate();
+  ASSERT_TRUE(chart.Step());
+  ASSERT_TRUE(chart.Step());
+  ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
+  ASSERT_TRUE(chart.Step());  // R2 moves on while Slow runs
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "Slow", "R2", "B"));
+  gate->Open();
+  chart.RunUntilStable();
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "R1_3", "R2", "B"));
+}
+
+TEST_F(PooledActivities, ActivitiesRunOnWorkerThreads) {
+  Statechart chart("Root", hub, Pooled(1));
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  class WhereAmI : public IActivity {
+   public:
+    explicit WhereAmI(std::thread::id* id) : id_(id) {}
+    int Execute() override {
+      *id_ = std::this_thread::get_id();
+      return 0;
+    }
+    std::string GetName() override { return "WhereAmI"; }
+    std::thread::id* id_;
+  };
+  std::thread::id ran;
+  chart.AddTransition(start, chart.Add<BasicState>("X", &chart, std::make_unique<WhereAmI>(&ran)));
+  chart.RunUntilStable();
+  EXPECT_NE(ran, std::thread::id());
+  EXPECT_NE(ran, std::this_thread::get_id());
+}
+
+TEST_F(PooledActivities, InlineModeRunsOnTheCallingThread) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  std::thread::id ran;
+  class WhereAmI : public IActivity {
+   public:
+    explicit WhereAmI(std::thread::id* id) : id_(id) {}
+    int Execute() override {
+      *id_ = std::this_thread::get_id();
+      return 0;
+    }
+    std::string GetName() override { return "WhereAmI"; }
+    std::thread::id* id_;
+  };
+  chart.AddTransition(start, chart.Add<BasicState>("X", &chart, std::make_unique<WhereAmI>(&ran)));
+  chart.RunUntilStable();
+  EXPECT_EQ(ran, std::this_thread::get_id());
+}
+
+TEST_F(PooledActivities, DestroyingTheChartWaitsForRunningActivities) {
+  auto finished = Counter();
+  {
+    Statechart chart("Root", hub, Pooled());
+    auto* start = chart.Add<StartState>("Root_1", &chart);
+    chart.AddTransition(start, chart.Add<BasicState>("X", &chart,
+                                                     std::make_unique<SleepingActivity>(
+                                                         std::chrono::milliseconds(30), finished)));
+    chart.Activate();
+    ASSERT_TRUE(chart.Step());
+  }
+  EXPECT_EQ(finished->load(), 1);
+}
+
+}  // namespace
+}  // namespace kse_test

@@ -1,0 +1,245 @@
+// Start()/Stop(): the engine on its own thread with real time. It must re-evaluate when an
+// activity ends, a timer expires or a message is published, without waiting for its idle
+// re-evaluation (1 s): every reaction below is required well under that.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include "test_support.h"
+
+namespace kse_test {
+namespace {
+
+using ::testing::ElementsAre;
+using Clock = std::chrono::steady_clock;
+using std::chrono::milliseconds;
+
+constexpr milliseconds kReaction(600);  // < the 1 s idle re-evaluation
+constexpr milliseconds kLimit(3000);    // bound of every wait
+
+class Threaded : public ::testing::Test {
+ protected:
+  MessageHub hub;  // SteadyClock
+};
+
+TEST_F(Threaded, ActivityEndWakesTheEngine) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto finished = Counter();
+  auto* work = chart.Add<BasicState>(
+      "Work", &chart, std::make_unique<SleepingActivity>(milliseconds(40), finished));
+  auto* after = chart.Add<BasicState>("After", &chart);
+  chart.AddTransition(start, work);
+  chart.AddTransition(work, after);
+
+  chart.Start();
+  EXPECT_TRUE(chart.IsStarted());
+  ASSERT_TRUE(WaitUntil([&] { return finished->load() == 1; }, kLimit));
+  const auto ended = Clock::now();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "After"); }, kLimit));
+  EXPECT_LT(Clock::now() - ended, kReaction);
+  chart.Stop();
+  EXPECT_FALSE(chart.IsStarted());
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "After"));
+}
+
+TEST_F(Threaded, TimerExpiryWakesTheEngine) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* waiting = chart.Add<BasicState>("Waiting", &chart);
+  auto* done = chart.Add<BasicState>("Done", &chart);
+  chart.AddTransition(start, waiting, nullptr, std::make_unique<TimeoutAction>("behavior", 60));
+  chart.AddTransition(waiting, done, TimeoutCheck("behavior"));
+
+  const auto begin = Clock::now();
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Done"); }, kLimit));
+  const auto elapsed = Clock::now() - begin;
+  chart.Stop();
+  EXPECT_GE(elapsed, milliseconds(60));
+  EXPECT_LT(elapsed, milliseconds(60) + kReaction);
+}
+
+TEST_F(Threaded, PublishWakesTheEngine) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* waiting = chart.Add<BasicState>("Waiting", &chart);
+  auto* playing = chart.Add<BasicState>("Playing", &chart);
+  chart.AddTransition(start, waiting);
+  chart.AddTransition(waiting, playing, If([](Blackboard& blk) {
+                        auto gsm = blk.ReadState<GameStateMessage>("worldstate");
+                        return gsm != nullptr && gsm->player_state() == PLAYER_PLAYING;
+                      }, {"worldstate"}));
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Waiting"); }, kLimit));
+  std::this_thread::sleep_for(milliseconds(20));
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Waiting"));
+
+  auto message = std::make_shared<GameStateMessage>();
+  message->set_player_state(PLAYER_PLAYING);
+  const auto published = Clock::now();
+  std::thread publisher([&] { hub.Publish("worldstate", Kind::State, message); });
+  publisher.join();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Playing"); }, kLimit));
+  EXPECT_LT(Clock::now() - published, kReaction);
+  chart.Stop();
+}
+
+TEST_F(Threaded, PollingLoopRunsTheActivityRepeatedly) {
+  // Scan -> Scan [TimeoutCheck(behavior)] / TimeoutAction.behavior.20 until 5 runs.
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto runs = Counter();
+  auto* scan = chart.Add<BasicState>("Scan", &chart, std::make_unique<CountingActivity>(runs));
+  auto* end = chart.Add<EndState>("Root_3", &chart);
+  chart.AddTransition(start, scan, nullptr, std::make_unique<TimeoutAction>("behavior", 20));
+  chart.AddTransition(scan, scan, If([runs](Blackboard& blk) {
+                        return blk.TimeoutExpired("behavior") && runs->load() < 5;
+                      }),
+                      std::make_unique<TimeoutAction>("behavior", 20));
+  chart.AddTransition(scan, end, If([runs](Blackboard&) { return runs->load() >= 5; }));
+  const auto begin = Clock::now();
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Root_3"); }, kLimit));
+  const auto elapsed = Clock::now() - begin;
+  chart.Stop();
+  EXPECT_EQ(runs->load(), 5);
+  EXPECT_GE(elapsed, milliseconds(80));  // four waits of 20 ms
+  EXPECT_LT(elapsed, milliseconds(80) + kReaction);
+}
+
+TEST_F(Threaded, ThrowingActivityDoesNotStopTheEngine) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* bad = chart.Add<BasicState>("Bad", &chart, std::make_unique<ThrowingActivity>());
+  auto runs = Counter();
+  auto* good = chart.Add<BasicState>("Good", &chart, std::make_unique<CountingActivity>(runs));
+  chart.AddTransition(start, bad);
+  chart.AddTransition(bad, good);
+  ::testing::internal::CaptureStderr();
+  chart.Start();
+  const bool reached = WaitUntil([&] { return runs->load() == 1; }, kLimit);
+  chart.Stop();
+  ::testing::internal::GetCapturedStderr();
+  ASSERT_TRUE(reached);
+  EXPECT_EQ(chart.ActivityFailures(), 1U);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Good"));
+}
+
+TEST_F(Threaded, InlineActivitiesWorkInThreadedMode) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto runs = Counter();
+  auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<CountingActivity>(runs));
+  auto* end = chart.Add<EndState>("Root_3", &chart);
+  chart.AddTransition(start, x);
+  chart.AddTransition(x, end);
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Root_3"); }, kLimit));
+  chart.Stop();
+  EXPECT_EQ(runs->load(), 1);
+}
+
+TEST_F(Threaded, StopKeepsTheConfigurationAndStartResumes) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* waiting = chart.Add<BasicState>("Waiting", &chart);
+  auto* done = chart.Add<BasicState>("Done", &chart);
+  auto go = Flag(false);
+  chart.AddTransition(start, waiting);
+  chart.AddTransition(waiting, done, When(go));
+  chart.Stop();  // not started: nothing happens
+  chart.Start();
+  chart.Start();  // already started: nothing happens
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Waiting"); }, kLimit));
+  chart.Stop();
+  go->store(true);
+  chart.Wake();
+  std::this_thread::sleep_for(milliseconds(20));
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Waiting")) << "stopped: no steps";
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Done"); }, kLimit));
+  chart.Stop();
+  chart.Stop();
+}
+
+TEST_F(Threaded, WakeMakesTheEngineReevaluateGuardsOnOtherState) {
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* waiting = chart.Add<BasicState>("Waiting", &chart);
+  auto* done = chart.Add<BasicState>("Done", &chart);
+  auto go = Flag(false);
+  chart.AddTransition(start, waiting);
+  chart.AddTransition(waiting, done, When(go));
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Waiting"); }, kLimit));
+  go->store(true);
+  const auto woken = Clock::now();
+  chart.Wake();
+  ASSERT_TRUE(WaitUntil([&] { return HasState(chart.ActiveStates(), "Done"); }, kLimit));
+  EXPECT_LT(Clock::now() - woken, kReaction);
+}
+
+TEST_F(Threaded, DestroyingAStartedChartStopsIt) {
+  auto runs = Counter();
+  {
+    Statechart chart("Root", hub, Pooled());
+    auto* start = chart.Add<StartState>("Root_1", &chart);
+    auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<CountingActivity>(runs));
+    chart.AddTransition(start, x);
+    chart.AddTransition(x, x);  // loops forever
+    chart.Start();
+    ASSERT_TRUE(WaitUntil([&] { return runs->load() > 10; }, kLimit));
+  }
+  const int after = runs->load();
+  std::this_thread::sleep_for(milliseconds(10));
+  EXPECT_EQ(runs->load(), after);
+}
+
+TEST_F(Threaded, ConcurrentPublishersWhileTheEngineRuns) {
+  // Two regions count signals published from four threads; every signal reaches both.
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* both = chart.Add<AndState>("Both", &chart);
+  auto counts = std::make_shared<std::array<std::atomic<int>, 2>>();
+  for (int region = 0; region < 2; ++region) {
+    auto* r = chart.Add<OrState>("R" + std::to_string(region), both);
+    auto* rStart = chart.Add<StartState>("R" + std::to_string(region) + "_1", r);
+    auto* counting = chart.Add<BasicState>("Counting" + std::to_string(region), r);
+    chart.AddTransition(rStart, counting);
+    chart.AddTransition(counting, counting, If([counts, region](Blackboard& blk) {
+                          bool any = false;
+                          while (blk.ReadSignal<FallMessage>("events") != nullptr) {
+                            ++(*counts)[static_cast<std::size_t>(region)];
+                            any = true;
+                          }
+                          return any;
+                        }, {"events"}));
+  }
+  chart.AddTransition(start, both);
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return hub.SubscriberCount("events") == 2; }, kLimit));
+
+  constexpr int kThreads = 4;
+  constexpr int kEach = 200;
+  std::vector<std::thread> publishers;
+  for (int t = 0; t < kThreads; ++t) {
+    publishers.emplace_back([&] {
+      for (int i = 0; i < kEach; ++i) {
+        auto message = std::make_shared<FallMessage>();
+        message->set_fall(i % 3 - 1);
+        hub.Publish("events", Kind::Signal, message);
+      }
+    });
+  }
+  for (auto& publisher : publishers) publisher.join();
+  ASSERT_TRUE(WaitUntil([&] {
+    return (*counts)[0].load() == kThreads * kEach && (*counts)[1].load() == kThreads * kEach;
+  }, kLimit));
+  chart.Stop();
+}
+
+}  // namespace
+}  // namespace kse_test

@@ -1,0 +1,277 @@
+// kse::messaging: clocks, the hub, and the State / Signal / Data semantics of blackboards.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "test_support.h"
+
+namespace kse_test {
+namespace {
+
+using kse::messaging::Blackboard;
+using kse::messaging::Kind;
+using kse::messaging::SteadyClock;
+using kse::messaging::TimePoint;
+using std::chrono::milliseconds;
+using ::testing::ElementsAre;
+
+std::shared_ptr<HeadToBMessage> Head(int ballfound) {
+  auto message = std::make_shared<HeadToBMessage>();
+  message->set_ballfound(ballfound);
+  return message;
+}
+
+class Messaging : public ::testing::Test {
+ protected:
+  ManualClock clock{TimePoint(std::chrono::seconds(100))};
+  MessageHub hub{clock};
+};
+
+TEST(Clocks, ManualClockMovesOnlyWhenTold) {
+  ManualClock clock;
+  EXPECT_EQ(clock.Now(), TimePoint{});
+  clock.Advance(milliseconds(250));
+  EXPECT_EQ(clock.Now(), TimePoint(milliseconds(250)));
+  clock.Set(TimePoint(std::chrono::seconds(3)));
+  EXPECT_EQ(clock.Now(), TimePoint(std::chrono::seconds(3)));
+}
+
+TEST(Clocks, SteadyClockFollowsRealTime) {
+  const auto before = std::chrono::steady_clock::now();
+  const auto now = SteadyClock::Instance().Now();
+  EXPECT_GE(now, before);
+  EXPECT_EQ(&SteadyClock::Instance(), &SteadyClock::Instance());
+  EXPECT_STREQ(kse::messaging::ToString(Kind::Signal), "Signal");
+  EXPECT_STREQ(kse::messaging::ToString(Kind::State), "State");
+  EXPECT_STREQ(kse::messaging::ToString(Kind::Data), "Data");
+}
+
+TEST_F(Messaging, StateKeepsTheLastValue) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior"), nullptr);
+  hub.Publish("behavior", Kind::State, Head(1));
+  hub.Publish("behavior", Kind::State, Head(2));
+  auto state = board.ReadState<HeadToBMessage>("behavior");
+  ASSERT_NE(state, nullptr);
+  EXPECT_EQ(state->ballfound(), 2);
+  // Reading does not consume.
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 2);
+}
+
+TEST_F(Messaging, MessagesAreKeyedByTopicAndType) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  board.Subscribe("other");
+  auto fall = std::make_shared<FallMessage>();
+  fall->set_fall(-1);
+  hub.Publish("behavior", Kind::State, Head(3));
+  hub.Publish("behavior", Kind::State, fall);
+  hub.Publish("other", Kind::State, Head(4));
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 3);
+  EXPECT_EQ(board.ReadState<FallMessage>("behavior")->fall(), -1);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("other")->ballfound(), 4);
+  EXPECT_EQ(board.ReadState<FallMessage>("other"), nullptr);
+}
+
+TEST_F(Messaging, KindsAreKeptApart) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  hub.Publish("behavior", Kind::Signal, Head(1));
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(board.ReadData<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_NE(board.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+}
+
+TEST_F(Messaging, OnlySubscribedTopicsAreDelivered) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  board.Subscribe("behavior");  // idempotent
+  EXPECT_EQ(hub.SubscriberCount("behavior"), 1U);
+  hub.Publish("vision", Kind::Signal, Head(1));
+  hub.Publish("vision", Kind::State, Head(1));
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("vision"), nullptr);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("vision"), nullptr);
+  EXPECT_TRUE(board.IsSubscribed("behavior"));
+  EXPECT_FALSE(board.IsSubscribed("vision"));
+}
+
+TEST_F(Messaging, LateSubscriberStartsWithTheCurrentState) {
+  hub.Publish("worldstate", Kind::State, Head(5));
+  hub.Publish("worldstate", Kind::Signal, Head(6));
+  Blackboard board(hub);
+  board.Subscribe("worldstate");
+  ASSERT_NE(board.ReadState<HeadToBMessage>("worldstate"), nullptr);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("worldstate")->ballfound(), 5);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("worldstate"), nullptr) << "signals are not retained";
+}
+
+TEST_F(Messaging, SignalsAreReadOnceInOrder) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  hub.Publish("behavior", Kind::Signal, Head(1));
+  hub.Publish("behavior", Kind::Signal, Head(2));
+  EXPECT_EQ(board.PendingSignals("behavior", "HeadToBMessage"), 2U);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 1);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 2);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+}
+
+TEST_F(Messaging, EachBlackboardSeesASignalOnce) {
+  Blackboard one(hub, "one");
+  Blackboard two(hub, "two");
+  one.Subscribe("behavior");
+  two.Subscribe("behavior");
+  hub.Publish("behavior", Kind::Signal, Head(9));
+  EXPECT_NE(one.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(one.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_NE(two.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(two.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+}
+
+TEST_F(Messaging, SignalQueueIsBounded) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  for (std::size_t i = 0; i < Blackboard::kSignalQueueLimit + 5; ++i) {
+    hub.Publish("behavior", Kind::Signal, Head(static_cast<int>(i)));
+  }
+  EXPECT_EQ(board.PendingSignals("behavior", "HeadToBMessage"), Blackboard::kSignalQueueLimit);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 5) << "oldest dropped";
+}
+
+TEST_F(Messaging, DataKeepsATimeStampedBoundedHistory) {
+  Blackboard board(hub);
+  board.Subscribe("worldstate");
+  EXPECT_EQ(board.ReadData<HeadToBMessage>("worldstate"), nullptr);
+  const TimePoint begin = clock.Now();
+  for (int i = 0; i < 150; ++i) {
+    hub.Publish("worldstate", Kind::Data, Head(i));
+    clock.Advance(milliseconds(10));
+  }
+  EXPECT_EQ(board.ReadData<HeadToBMessage>("worldstate")->ballfound(), 149);
+  auto all = board.ReadDataHistory<HeadToBMessage>("worldstate", begin);
+  ASSERT_EQ(all.size(), Blackboard::kDataHistoryLimit);
+  EXPECT_EQ(all.front().message->ballfound(), 50);
+  EXPECT_EQ(all.back().message->ballfound(), 149);
+  EXPECT_EQ(all.front().time, begin + milliseconds(500));
+  // Since a time: entries stamped at or after it, oldest first.
+  auto recent = board.ReadDataHistory<HeadToBMessage>("worldstate", begin + milliseconds(1470));
+  ASSERT_EQ(recent.size(), 3U);
+  EXPECT_EQ(recent[0].message->ballfound(), 147);
+  EXPECT_EQ(recent[2].message->ballfound(), 149);
+  EXPECT_EQ(recent[2].time, begin + milliseconds(1490));
+  // Reading does not consume.
+  EXPECT_EQ(board.ReadData<HeadToBMessage>("worldstate")->ballfound(), 149);
+}
+
+TEST_F(Messaging, BlackboardPublishCopiesAndGoesThroughTheHub) {
+  Blackboard writer(hub, "writer");
+  Blackboard reader(hub, "reader");
+  reader.Subscribe("behavior");
+  HeadToBMessage message;
+  message.set_ballfound(1);
+  writer.Publish("behavior", Kind::State, message);
+  message.set_ballfound(2);  // the published copy does not change
+  EXPECT_EQ(reader.ReadState<HeadToBMessage>("behavior")->ballfound(), 1);
+  EXPECT_EQ(writer.ReadState<HeadToBMessage>("behavior"), nullptr) << "writer is not subscribed";
+  EXPECT_EQ(hub.PublishedCount(), 1U);
+}
+
+TEST_F(Messaging, NullMessagesAreIgnored) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  hub.Publish("behavior", Kind::State, nullptr);
+  EXPECT_EQ(hub.PublishedCount(), 0U);
+}
+
+TEST_F(Messaging, ListenersAreCalledAfterEveryPublishUntilRemoved) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  int calls = 0;
+  bool delivered = false;
+  auto id = hub.AddListener([&] {
+    ++calls;
+    delivered = board.ReadState<HeadToBMessage>("behavior") != nullptr;
+  });
+  hub.Publish("behavior", Kind::State, Head(1));
+  hub.Publish("unrelated", Kind::Signal, Head(1));
+  EXPECT_EQ(calls, 2);
+  EXPECT_TRUE(delivered) << "listeners run after delivery";
+  hub.RemoveListener(id);
+  hub.Publish("behavior", Kind::State, Head(1));
+  EXPECT_EQ(calls, 2);
+}
+
+TEST_F(Messaging, DestroyedBlackboardsUnsubscribe) {
+  {
+    Blackboard board(hub);
+    board.Subscribe("behavior");
+    EXPECT_EQ(hub.SubscriberCount("behavior"), 1U);
+  }
+  EXPECT_EQ(hub.SubscriberCount("behavior"), 0U);
+  hub.Publish("behavior", Kind::Signal, Head(1));  // must not touch the destroyed board
+}
+
+TEST_F(Messaging, TimersExpireAtTheirDeadline) {
+  Blackboard board(hub);
+  EXPECT_TRUE(board.TimeoutExpired("behavior")) << "no timer: nothing pending";
+  EXPECT_FALSE(board.NextDeadline().has_value());
+  board.SetTimeout("behavior", milliseconds(250));
+  board.SetTimeout("motion", milliseconds(100));
+  EXPECT_FALSE(board.TimeoutExpired("behavior"));
+  ASSERT_TRUE(board.NextDeadline().has_value());
+  EXPECT_EQ(*board.NextDeadline(), clock.Now() + milliseconds(100));
+  clock.Advance(milliseconds(100));
+  EXPECT_TRUE(board.TimeoutExpired("motion"));
+  EXPECT_FALSE(board.TimeoutExpired("behavior"));
+  EXPECT_EQ(*board.NextDeadline(), clock.Now() + milliseconds(150));
+  clock.Advance(milliseconds(149));
+  EXPECT_FALSE(board.TimeoutExpired("behavior"));
+  clock.Advance(milliseconds(1));
+  EXPECT_TRUE(board.TimeoutExpired("behavior"));
+  EXPECT_FALSE(board.NextDeadline().has_value());
+  // Setting again restarts the timer.
+  board.SetTimeout("behavior", milliseconds(50));
+  EXPECT_FALSE(board.TimeoutExpired("behavior"));
+  clock.Advance(milliseconds(50));
+  EXPECT_TRUE(board.TimeoutExpired("behavior"));
+}
+
+TEST_F(Messaging, ConcurrentPublishersAndReaders) {
+  Blackboard board(hub);
+  board.Subscribe("worldstate");
+  constexpr int kThreads = 4;
+  constexpr int kEach = 250;  // all signals fit in one queue (kSignalQueueLimit)
+  std::atomic<bool> done{false};
+  std::atomic<int> signals{0};
+  std::thread reader([&] {
+    while (!done.load()) {
+      if (board.ReadSignal<HeadToBMessage>("worldstate")) ++signals;
+      board.ReadState<HeadToBMessage>("worldstate");
+      board.ReadDataHistory<HeadToBMessage>("worldstate", TimePoint{});
+      board.NextDeadline();
+    }
+  });
+  std::vector<std::thread> writers;
+  for (int t = 0; t < kThreads; ++t) {
+    writers.emplace_back([&, t] {
+      for (int i = 0; i < kEach; ++i) {
+        hub.Publish("worldstate", Kind::Signal, Head(i));
+        hub.Publish("worldstate", Kind::State, Head(i));
+        hub.Publish("worldstate", Kind::Data, Head(i));
+        if (i % 50 == 0) board.SetTimeout("t" + std::to_string(t), milliseconds(i));
+      }
+    });
+  }
+  for (auto& writer : writers) writer.join();
+  done.store(true);
+  reader.join();
+  while (board.ReadSignal<HeadToBMessage>("worldstate")) ++signals;
+  EXPECT_EQ(signals.load(), kThreads * kEach);
+  EXPECT_EQ(hub.PublishedCount(), static_cast<std::size_t>(3 * kThreads * kEach));
+}
+
+}  // namespace
+}  // namespace kse_test
