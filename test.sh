@@ -7,6 +7,21 @@
 #   4. a smoke run of the kse command on the bundled example.
 set -euo pipefail
 cd "$(dirname "$0")"
+
+# Debian packages the C++ side builds on; installed when missing. (The JDK 21+ that Tycho needs is
+# not a Debian 12 package: our machines ship Temurin 25.)
+as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+packages="g++ cmake ninja-build libprotobuf-dev protobuf-compiler libgtest-dev libgmock-dev libbenchmark-dev"
+missing=""
+for package in $packages; do
+  dpkg -s "$package" >/dev/null 2>&1 || missing="$missing $package"
+done
+if [ -n "$missing" ]; then
+  echo "== installing Debian packages:$missing"
+  as_root apt-get update -qq
+  # shellcheck disable=SC2086
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $missing
+fi
 if [ -z "${JAVA_HOME:-}" ]; then
   for candidate in /usr/lib/jvm/temurin-25-jdk-amd64 /usr/lib/jvm/java-21-openjdk-amd64 /usr/lib/jvm/default-java; do
     if [ -x "$candidate/bin/java" ]; then export JAVA_HOME="$candidate"; break; fi
@@ -31,8 +46,9 @@ runtime_suite asan -DKSE_SANITIZE=address -DKSE_BUILD_BENCHMARKS=OFF
 runtime_suite tsan -DKSE_SANITIZE=thread -DKSE_BUILD_BENCHMARKS=OFF
 cmake --install "$out/runtime-plain" > "$out/runtime-install.log"
 
-echo "== Integration: the legacy Goalie, generated, built and driven"
-tests/integration/goalie/run.sh "$out/runtime-prefix" "$out/goalie"
+echo "== Integration: generated code built against the installed runtime and driven"
+tests/integration/run.sh goalie ../shared/legacy-kse/Goalie/Goalie.stct "$out/runtime-prefix" "$out/goalie"
+tests/integration/run.sh allkinds tests/org.kse.generator.monas.tests/models/AllKinds.stct "$out/runtime-prefix" "$out/allkinds"
 
 echo "== kse smoke run"
 ./kse transform -q examples/Goalie/Goalie.txt -o "$out/Goalie.stct"

@@ -1,6 +1,6 @@
 #include "Search.h"
 
-#include <statechart_engine/ActivityFactory.h>
+#include <statechart_engine/Factories.h>
 
 namespace {
 const statechart_engine::ActivityRegistrar<Search> registrar("Search");

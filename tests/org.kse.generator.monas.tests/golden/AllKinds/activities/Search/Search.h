@@ -3,7 +3,7 @@
 #include <string>
 
 #include <kse/messages/all.h>
-#include <statechart_engine/IActivity.h>
+#include <statechart_engine/Interfaces.h>
 
 /** The activity Search: written by you, never overwritten by KSE. */
 class Search : public statechart_engine::IActivity {

@@ -1,6 +1,6 @@
 #include "Track.h"
 
-#include <statechart_engine/ActivityFactory.h>
+#include <statechart_engine/Factories.h>
 
 namespace {
 const statechart_engine::ActivityRegistrar<Track> registrar("Track");

@@ -3,7 +3,7 @@
 #include <string>
 
 #include <kse/messages/all.h>
-#include <statechart_engine/IActivity.h>
+#include <statechart_engine/Interfaces.h>
 
 /** The activity Track: written by you, never overwritten by KSE. */
 class Track : public statechart_engine::IActivity {

@@ -1,6 +1,6 @@
 #include "Walk.h"
 
-#include <statechart_engine/ActivityFactory.h>
+#include <statechart_engine/Factories.h>
 
 namespace {
 const statechart_engine::ActivityRegistrar<Walk> registrar("Walk");

@@ -3,8 +3,8 @@
 
 #include <memory>
 
-#include <statechart_engine/ActivityFactory.h>
-#include <statechart_engine/StatechartFactory.h>
+#include <statechart_engine/Factories.h>
+#include <statechart_engine/TimeoutAction.h>
 #include "transitions/TrCond_0_2_TO_0_3.h"
 #include "transitions/TrCond_0_2_TO_0_4.h"
 #include "transitions/TrCond_0_3_TO_0_3.h"

@@ -2,6 +2,7 @@
 #ifndef KSE_STATECHART_ALLKINDS_H
 #define KSE_STATECHART_ALLKINDS_H
 
+#include <statechart_engine/Factories.h>
 #include <statechart_engine/Statechart.h>
 
 /** The statechart AllKinds, registered as "AllKinds". */

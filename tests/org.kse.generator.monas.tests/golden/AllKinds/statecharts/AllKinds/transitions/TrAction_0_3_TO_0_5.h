@@ -6,7 +6,7 @@
 
 #include <kse/behavior/BehaviorConst.h>
 #include <kse/messages/all.h>
-#include <statechart_engine/IAction.h>
+#include <statechart_engine/Interfaces.h>
 
 namespace kse_statechart_AllKinds {
 

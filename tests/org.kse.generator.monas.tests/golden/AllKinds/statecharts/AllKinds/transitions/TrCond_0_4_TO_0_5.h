@@ -5,7 +5,7 @@
 #include <kse/behavior/BehaviorConst.h>
 #include <kse/behavior/Guards.h>
 #include <kse/messages/all.h>
-#include <statechart_engine/ICondition.h>
+#include <statechart_engine/Interfaces.h>
 
 namespace kse_statechart_AllKinds {
 
