@@ -45,6 +45,8 @@ runtime_suite plain -DCMAKE_INSTALL_PREFIX="$out/runtime-prefix"
 runtime_suite asan -DKSE_SANITIZE=address -DKSE_BUILD_BENCHMARKS=OFF
 runtime_suite tsan -DKSE_SANITIZE=thread -DKSE_BUILD_BENCHMARKS=OFF
 cmake --install "$out/runtime-plain" > "$out/runtime-install.log"
+(cd "$out/runtime-plain" && cpack -G DEB > "$out/runtime-cpack.log")
+ls "$out"/runtime-plain/kse-runtime_*.deb
 
 echo "== Integration: generated code built against the installed runtime and driven"
 tests/integration/run.sh goalie ../shared/legacy-kse/Goalie/Goalie.stct "$out/runtime-prefix" "$out/goalie"

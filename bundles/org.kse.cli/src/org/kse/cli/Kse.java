@@ -16,6 +16,7 @@ import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.generator.monas.MonasGenerator;
 import org.kse.labeling.Labeler;
+import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.transform.FormulaTransformation;
@@ -39,7 +40,7 @@ public final class Kse {
 			commands:
 			  transform <formula> [-o model.stct] [--name NAME]
 			                      turn liveness formulas into a statechart model
-			  validate <model.stct>
+			  validate <model.stct> [--messages DIR]
 			                      check a model against the statechart rules
 			  label <model.stct> [-o out.stct]
 			                      renumber labels and rename states and transitions
@@ -60,9 +61,11 @@ public final class Kse {
 			  -q, --quiet         no progress lines""";
 
 	private static final String VALIDATE_HELP = """
-			usage: kse validate <model.stct>
+			usage: kse validate <model.stct> [--messages DIR]...
 
-			Checks a statechart against the KSE rules and the transition-expression grammar.
+			Checks a statechart against the KSE rules and the transition-expression grammar;
+			topics, message types and fields are checked against the standard messages and the
+			.proto files under each --messages folder.
 			Prints one diagnostic per line as 'file: label (name): message'.
 			Exit code 0 when the model has no error, 1 when it has errors.""";
 
@@ -75,12 +78,14 @@ public final class Kse {
 			changes nothing. Writes the model in place unless -o is given.""";
 
 	private static final String GENERATE_HELP = """
-			usage: kse generate <model.stct> <source-folder> [--logger] [--quiet]
+			usage: kse generate <model.stct> <source-folder> [--logger] [--messages DIR]... [--quiet]
 
 			Writes the Monas C++ of a valid model into a source folder: statecharts/<Model>/
 			(the statechart class, one class per guard and per action list, CMakeLists.txt) and
 			activities/<Activity>/ skeletons. Activities that exist are never overwritten; files
 			whose content would not change are not touched. A model with errors is refused.
+			Messages are checked against the standard set, <source-folder>/messages/*.proto
+			(compiled by the generated CMake) and each --messages folder.
 			  --logger     conditions print their result when evaluated
 			  -q, --quiet  no progress lines""";
 
@@ -160,7 +165,7 @@ public final class Kse {
 	}
 
 	private int validate(List<String> args) throws IOException, UsageException {
-		Options options = Options.parse(args, List.of(), List.of());
+		Options options = Options.parse(args, List.of("--messages"), List.of());
 		if (options.help) {
 			out.println(VALIDATE_HELP);
 			return OK;
@@ -169,7 +174,7 @@ public final class Kse {
 		Model model = StatechartResources.load(file);
 		int errors = 0;
 		int warnings = 0;
-		for (Diagnostic diagnostic : ModelValidation.validate(model).getChildren()) {
+		for (Diagnostic diagnostic : ModelValidation.validate(model, StandardMessages.catalog(options.paths("--messages"))).getChildren()) {
 			boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
 			errors += error ? 1 : 0;
 			warnings += error ? 0 : 1;
@@ -195,7 +200,7 @@ public final class Kse {
 	}
 
 	private int generate(List<String> args) throws IOException, UsageException {
-		Options options = Options.parse(args, List.of(), List.of("--logger", "-q", "--quiet"));
+		Options options = Options.parse(args, List.of("--messages"), List.of("--logger", "-q", "--quiet"));
 		if (options.help) {
 			out.println(GENERATE_HELP);
 			return OK;
@@ -208,7 +213,7 @@ public final class Kse {
 		Path folder = Path.of(options.positional.get(1));
 		Model model = StatechartResources.load(file);
 		try {
-			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger")),
+			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages")),
 					(step, steps, what) -> progress(step, steps, what));
 			out.println("generated " + model.getName() + " into " + folder + ": " + report.written().size() + " written, "
 					+ report.unchanged().size() + " unchanged, " + report.kept().size() + " activities kept"
@@ -284,7 +289,7 @@ public final class Kse {
 	/** Tiny option parser: positional arguments, options with one value, flags. */
 	private static final class Options {
 		final List<String> positional = new ArrayList<>();
-		final java.util.Map<String, String> values = new java.util.HashMap<>();
+		final java.util.Map<String, List<String>> values = new java.util.HashMap<>();
 		final java.util.Set<String> flags = new java.util.HashSet<>();
 		boolean help;
 
@@ -298,7 +303,7 @@ public final class Kse {
 					if (i + 1 >= args.size()) {
 						throw new UsageException("option " + arg + " needs a value");
 					}
-					options.values.put(arg, args.get(++i));
+					options.values.computeIfAbsent(arg, key -> new ArrayList<>()).add(args.get(++i));
 				} else if (flagNames.contains(arg)) {
 					options.flags.add(arg);
 				} else if (arg.startsWith("-") && arg.length() > 1) {
@@ -320,10 +325,15 @@ public final class Kse {
 		String value(String... names) {
 			for (String name : names) {
 				if (values.containsKey(name)) {
-					return values.get(name);
+					List<String> given = values.get(name);
+					return given.get(given.size() - 1);
 				}
 			}
 			return null;
+		}
+
+		List<Path> paths(String name) {
+			return values.getOrDefault(name, List.of()).stream().map(Path::of).toList();
 		}
 
 		boolean flag(String... names) {

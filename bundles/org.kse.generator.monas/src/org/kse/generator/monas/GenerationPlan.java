@@ -14,6 +14,8 @@ import org.kse.expression.ExpressionParser;
 import org.kse.expression.transitionExpression.Action;
 import org.kse.expression.transitionExpression.Condition;
 import org.kse.expression.transitionExpression.TransitionExpression;
+import org.kse.messages.MessageCatalog;
+import org.kse.messages.StandardMessages;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -39,7 +41,12 @@ public final class GenerationPlan {
 	private final Map<String, Node> activities = new LinkedHashMap<>();
 	private final List<PlannedTransition> transitions = new ArrayList<>();
 
-	private GenerationPlan(Model model) {
+	private final MessageCatalog catalog;
+	private final List<String> userProtos;
+
+	private GenerationPlan(Model model, MessageCatalog catalog, List<String> userProtos) {
+		this.catalog = catalog;
+		this.userProtos = userProtos;
 		this.modelName = model.getName() == null ? model.getNodes().get(0).getName() : model.getName();
 		this.className = CppNames.identifier(modelName);
 		this.root = model.getNodes().get(0);
@@ -82,7 +89,33 @@ public final class GenerationPlan {
 	}
 
 	public static GenerationPlan of(Model model) {
-		return new GenerationPlan(model);
+		return new GenerationPlan(model, StandardMessages.catalog(), List.of());
+	}
+
+	public static GenerationPlan of(Model model, MessageCatalog catalog, List<String> userProtos) {
+		return new GenerationPlan(model, catalog, userProtos);
+	}
+
+	/** The user's .proto files (relative to the source tree's messages folder) that the build compiles. */
+	public List<String> userProtos() {
+		return userProtos;
+	}
+
+	/**
+	 * Headers of the user's message types among {@code messages}: {@code <File>.pb.h} of
+	 * each type not in the standard set (the standard set comes with kse/messages/all.h).
+	 */
+	public List<String> userHeaders(java.util.Collection<String> messages) {
+		java.util.TreeSet<String> headers = new java.util.TreeSet<>();
+		for (String message : messages) {
+			catalog.message(message).ifPresent(type -> {
+				String file = type.file() == null ? "" : type.file().toString().replace('\\', '/');
+				if (!StandardMessages.FILES.contains(file) && file.endsWith(".proto")) {
+					headers.add(file.substring(0, file.length() - ".proto".length()) + ".pb.h");
+				}
+			});
+		}
+		return List.copyOf(headers);
 	}
 
 	public String modelName() {

@@ -12,6 +12,8 @@ import java.util.Map;
 import java.util.stream.Stream;
 
 import org.eclipse.emf.common.util.Diagnostic;
+import org.kse.messages.MessageCatalog;
+import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -25,10 +27,21 @@ import org.kse.validation.ModelValidation;
  */
 public final class MonasGenerator {
 
-	/** Generation settings. {@code logger}: conditions print their result. */
-	public record Options(boolean logger) {
-		public static final Options DEFAULT = new Options(false);
+	/**
+	 * Generation settings. {@code logger}: conditions print their result.
+	 * {@code messageFolders}: folders of the user's own .proto files, besides the source
+	 * folder's {@code messages/} that is always read.
+	 */
+	public record Options(boolean logger, List<Path> messageFolders) {
+		public static final Options DEFAULT = new Options(false, List.of());
+
+		public Options(boolean logger) {
+			this(logger, List.of());
+		}
 	}
+
+	/** The folder of a source tree that holds the user's own .proto files. */
+	public static final String MESSAGES_FOLDER = "messages";
 
 	/** What a generation did, by path relative to the source folder. */
 	public record Report(List<Path> written, List<Path> unchanged, List<Path> kept, List<Path> removed) {
@@ -68,8 +81,12 @@ public final class MonasGenerator {
 	public static Report generate(Model model, Path sourceFolder, Options options, Progress progress)
 			throws IOException, ModelHasErrorsException {
 		progress.step(1, 3, "validating " + model.getName());
+		Path root = sourceFolder.toAbsolutePath().normalize();
+		List<Path> messageFolders = new ArrayList<>(options.messageFolders());
+		messageFolders.add(root.resolve(MESSAGES_FOLDER));
+		MessageCatalog catalog = StandardMessages.catalog(messageFolders);
 		List<String> errors = new ArrayList<>();
-		for (Diagnostic diagnostic : ModelValidation.validate(model).getChildren()) {
+		for (Diagnostic diagnostic : ModelValidation.validate(model, catalog).getChildren()) {
 			if (diagnostic.getSeverity() == Diagnostic.ERROR) {
 				errors.add(diagnostic.getMessage());
 			}
@@ -78,8 +95,7 @@ public final class MonasGenerator {
 			throw new ModelHasErrorsException(errors);
 		}
 		progress.step(2, 3, "planning the C++ of " + model.getName());
-		GenerationPlan plan = GenerationPlan.of(model);
-		Path root = sourceFolder.toAbsolutePath().normalize();
+		GenerationPlan plan = GenerationPlan.of(model, catalog, userProtos(root.resolve(MESSAGES_FOLDER)));
 		Map<Path, String> owned = new LinkedHashMap<>();
 		Path chart = Path.of("statecharts", plan.className());
 		owned.put(chart.resolve(plan.className() + ".h"), MonasTemplates.statechartHeader(plan));
@@ -111,12 +127,23 @@ public final class MonasGenerator {
 				continue;
 			}
 			var inputs = activity.getValue().getVariables().stream().filter(v -> v.getType() != null && v.getType().split("\\.").length == 3).toList();
-			write(root, folder.resolve(name + ".h"), MonasTemplates.activityHeader(name, inputs));
+			write(root, folder.resolve(name + ".h"), MonasTemplates.activityHeader(plan, name, inputs));
 			write(root, folder.resolve(name + ".cpp"), MonasTemplates.activitySource(name, inputs));
-			write(root, folder.resolve("CMakeLists.txt"), MonasTemplates.activityCmake(name));
+			write(root, folder.resolve("CMakeLists.txt"), MonasTemplates.activityCmake(plan, name, inputs));
 			written.addAll(List.of(folder.resolve(name + ".h"), folder.resolve(name + ".cpp"), folder.resolve("CMakeLists.txt")));
 		}
 		return new Report(written, unchanged, kept, removed);
+	}
+
+	/** The user's .proto files of the source tree, relative to its messages folder, sorted. */
+	private static List<String> userProtos(Path folder) throws IOException {
+		if (!Files.isDirectory(folder)) {
+			return List.of();
+		}
+		try (Stream<Path> walk = Files.walk(folder)) {
+			return walk.filter(p -> p.toString().endsWith(".proto") && Files.isRegularFile(p))
+					.map(p -> folder.relativize(p).toString().replace('\\', '/')).sorted().toList();
+		}
 	}
 
 	/** Writes only when the content differs; true when the file was written. */

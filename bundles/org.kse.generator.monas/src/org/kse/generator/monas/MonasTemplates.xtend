@@ -133,6 +133,9 @@ class MonasTemplates {
 			#include <kse/behavior/Guards.h>
 			#include <kse/messages/all.h>
 			#include <statechart_engine/Interfaces.h>
+			«FOR header : plan.userHeaders(code.reads.map[type])»
+				#include "«header»"
+			«ENDFOR»
 
 			namespace «transition.namespace» {
 
@@ -170,6 +173,9 @@ class MonasTemplates {
 		#include <kse/behavior/BehaviorConst.h>
 		#include <kse/messages/all.h>
 		#include <statechart_engine/Interfaces.h>
+		«FOR header : plan.userHeaders(transition.action.filter(Publish).map[message].toList)»
+			#include "«header»"
+		«ENDFOR»
 
 		namespace «transition.namespace» {
 
@@ -211,15 +217,31 @@ class MonasTemplates {
 		add_library(statechart_«plan.className» OBJECT «plan.className».cpp)
 		target_include_directories(statechart_«plan.className» PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 		target_link_libraries(statechart_«plan.className» PUBLIC kse::runtime)
+		«IF !plan.userProtos.empty»
+
+			# the source tree's own messages (messages/*.proto)
+			if(NOT TARGET kse_user_messages)
+				kse_add_messages(kse_user_messages
+					PROTOS
+						«FOR proto : plan.userProtos»
+							${CMAKE_CURRENT_SOURCE_DIR}/../../messages/«proto»
+						«ENDFOR»
+					IMPORT_DIRS ${CMAKE_CURRENT_SOURCE_DIR}/../../messages)
+			endif()
+			target_link_libraries(statechart_«plan.className» PUBLIC kse_user_messages)
+		«ENDIF»
 	'''
 
-	def static String activityHeader(String activity, List<Variable> inputs) '''
+	def static String activityHeader(GenerationPlan plan, String activity, List<Variable> inputs) '''
 		#pragma once
 
 		#include <string>
 
 		#include <kse/messages/all.h>
 		#include <statechart_engine/Interfaces.h>
+		«FOR header : plan.userHeaders(inputs.map[type.split('\\.').get(2)])»
+			#include "«header»"
+		«ENDFOR»
 
 		/** The activity «activity»: written by you, never overwritten by KSE. */
 		class «activity» : public statechart_engine::IActivity {
@@ -255,9 +277,13 @@ class MonasTemplates {
 		}
 	'''
 
-	def static String activityCmake(String activity) '''
+	def static String activityCmake(GenerationPlan plan, String activity, List<Variable> inputs) '''
 		add_library(activity_«activity» OBJECT «activity».cpp)
 		target_include_directories(activity_«activity» PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 		target_link_libraries(activity_«activity» PUBLIC kse::runtime)
+		«IF !plan.userHeaders(inputs.map[type.split('\\.').get(2)]).empty»
+			# reads the source tree's own messages (defined by the statechart's CMakeLists.txt)
+			target_link_libraries(activity_«activity» PUBLIC kse_user_messages)
+		«ENDIF»
 	'''
 }

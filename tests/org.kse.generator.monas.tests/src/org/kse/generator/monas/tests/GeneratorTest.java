@@ -214,6 +214,28 @@ class GeneratorTest {
 		assertTrue(report.written().size() > 40);
 	}
 
+	@Test
+	void theSourceTreesOwnMessagesAreCheckedIncludedAndBuilt(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		model.getTransitions().get(1).setTE("[behavior.State.TeamMessage.role()==2]");
+		ModelHasErrorsException unknown = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertTrue(unknown.errors().get(0).contains("expression 1:17: unknown message type 'TeamMessage'"), unknown.errors().toString());
+
+		Files.createDirectories(folder.resolve("messages"));
+		Files.writeString(folder.resolve("messages/Team.proto"), "syntax = \"proto2\";\nmessage TeamMessage { optional int32 role = 1; }\n");
+		MonasGenerator.generate(model, folder, Options.DEFAULT);
+		String condition = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h"));
+		assertTrue(condition.contains("#include \"Team.pb.h\""), condition);
+		assertTrue(condition.contains("_blk->ReadState<TeamMessage>(\"behavior\")"), condition);
+		String cmake = Files.readString(folder.resolve("statecharts/AllKinds/CMakeLists.txt"));
+		assertTrue(cmake.contains("kse_add_messages(kse_user_messages"), cmake);
+		assertTrue(cmake.contains("${CMAKE_CURRENT_SOURCE_DIR}/../../messages/Team.proto"), cmake);
+
+		model.getTransitions().get(1).setTE("[behavior.State.TeamMessage.rank()==2]");
+		ModelHasErrorsException field = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertTrue(field.errors().get(0).contains("'TeamMessage' has no field 'rank'"), field.errors().toString());
+	}
+
 	private static Node node(Model model, String label) {
 		for (var it = model.eAllContents(); it.hasNext();) {
 			if (it.next() instanceof Node node && label.equals(node.getLabel())) {
