@@ -1,0 +1,36 @@
+// Walk so that the ball ends at the kicking spot in front of a foot (x 0.122 m,
+// y ±0.03 m: readyToKick), facing the opponent goal on the way when localised.
+#include "ApproachBall.h"
+
+#include <cmath>
+
+#include <common/RobotIO.h>
+#include <statechart_engine/Factories.h>
+
+namespace {
+const statechart_engine::ActivityRegistrar<ApproachBall> registrar("ApproachBall");
+constexpr float kKickX = 0.122f;
+constexpr float kKickY = 0.03f;
+}  // namespace
+
+void ApproachBall::UserInit() { examples::Subscribe(*_blk); }
+
+int ApproachBall::Execute() {
+	const auto world = examples::World::Read(*_blk);
+	if (!world.BallSeen()) {
+		examples::Stop(*_blk);
+		return 0;
+	}
+	const auto& ball = world.TheBall();
+	const float side = ball.relativey() >= 0 ? 1.0f : -1.0f;
+	const float ex = ball.relativex() - kKickX;
+	const float ey = ball.relativey() - side * kKickY;
+	const float bearing = world.BallBearing();
+	// far: walk at the ball turning towards it; near: line up on the kicking spot and the goal
+	const float goal = world.BearingTo(examples::kOpponentGoalX, 0.0f);
+	const bool near = world.BallDistance() < 0.5f;
+	const float turn = near && world.Localised() ? 0.8f * goal : 1.2f * bearing;
+	examples::Walk(*_blk, 2.5f * ex, 3.0f * ey, turn);
+	examples::TrackBall(*_blk, world);
+	return 0;
+}

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+#include <statechart_engine/Interfaces.h>
+
+/** The activity ApproachBall of the example behaviours (see ApproachBall.cpp). */
+class ApproachBall : public statechart_engine::IActivity {
+public:
+	void UserInit() override;
+	int Execute() override;
+	std::string GetName() override { return "ApproachBall"; }
+
+};

@@ -1,0 +1,16 @@
+#pragma once
+
+#include <string>
+
+#include <statechart_engine/Interfaces.h>
+
+/** The activity Scan of the example behaviours (see Scan.cpp). */
+class Scan : public statechart_engine::IActivity {
+public:
+	void UserInit() override;
+	int Execute() override;
+	std::string GetName() override { return "Scan"; }
+
+private:
+	int _step = 0;
+};

@@ -1,0 +1,16 @@
+#pragma once
+
+#include <string>
+
+#include <statechart_engine/Interfaces.h>
+
+/** The activity Stare of the example behaviours (see Stare.cpp). */
+class Stare : public statechart_engine::IActivity {
+public:
+	void UserInit() override;
+	int Execute() override;
+	std::string GetName() override { return "Stare"; }
+
+private:
+	float _lastDistance = -1.0f;
+};
