@@ -4,58 +4,15 @@ import java.nio.file.Path;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.Optional;
 import java.util.OptionalInt;
 
 /** An enum declaration with its values in declaration order. */
-public final class EnumType implements ProtoType {
+public final class EnumType extends ProtoType {
 
-	private final String name;
-	private String fullName;
-	private final Path file;
-	private final int line;
-	private final int column;
-	private final MessageType parent;
 	private final Map<String, Integer> values = new LinkedHashMap<>();
 
 	EnumType(String name, String fullName, Path file, int line, int column, MessageType parent) {
-		this.name = name;
-		this.fullName = fullName;
-		this.file = file;
-		this.line = line;
-		this.column = column;
-		this.parent = parent;
-	}
-
-	@Override
-	public String name() {
-		return name;
-	}
-
-	@Override
-	public String fullName() {
-		return fullName;
-	}
-
-	@Override
-	public Path file() {
-		return file;
-	}
-
-	@Override
-	public int line() {
-		return line;
-	}
-
-	@Override
-	public int column() {
-		return column;
-	}
-
-	/** The enclosing message, or empty for a top-level enum. */
-	@Override
-	public Optional<MessageType> parent() {
-		return Optional.ofNullable(parent);
+		super(name, fullName, file, line, column, parent);
 	}
 
 	/** Value name to number, in declaration order. */
@@ -73,13 +30,8 @@ public final class EnumType implements ProtoType {
 		return values.putIfAbsent(valueName, number) == null;
 	}
 
-	/** The package statement may follow the declarations, so names are qualified after parsing. */
-	void qualify(String packageName) {
-		fullName = packageName + "." + fullName;
-	}
-
 	@Override
 	public String toString() {
-		return "enum " + fullName;
+		return "enum " + fullName();
 	}
 }
