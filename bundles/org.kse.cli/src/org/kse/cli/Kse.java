@@ -47,6 +47,7 @@ public final class Kse {
 			  generate <model.stct> <source-folder> [--logger]
 			                      write the Monas C++ of a model into a source tree
 			  help [command]      show help
+			  version             show the versions of KSE and of what it runs on
 
 			Run 'kse <command> --help' for a command's options.""";
 
@@ -111,6 +112,7 @@ public final class Kse {
 				case "label" -> label(rest);
 				case "generate" -> generate(rest);
 				case "help", "-h", "--help" -> help(rest);
+				case "version", "--version" -> version();
 				default -> usage("unknown command '" + args[0] + "'");
 			};
 		} catch (UsageException e) {
@@ -131,6 +133,23 @@ public final class Kse {
 			default -> USAGE;
 		});
 		return OK;
+	}
+
+	private int version() {
+		out.println("kse " + bundleVersion(Kse.class));
+		out.println("EMF " + bundleVersion(org.eclipse.emf.ecore.EObject.class) + ", Xtext " + bundleVersion(org.eclipse.xtext.validation.Issue.class)
+				+ ", Java " + System.getProperty("java.version"));
+		return OK;
+	}
+
+	/** The version of the bundle (or jar) a class comes from, or "development" outside a build. */
+	private static String bundleVersion(Class<?> type) {
+		var bundle = org.osgi.framework.FrameworkUtil.getBundle(type);
+		if (bundle != null) {
+			return bundle.getVersion().toString();
+		}
+		String version = type.getPackage() == null ? null : type.getPackage().getImplementationVersion();
+		return version == null ? "development" : version;
 	}
 
 	private int usage(String problem) {

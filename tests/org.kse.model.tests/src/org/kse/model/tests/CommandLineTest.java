@@ -380,4 +380,12 @@ class CommandLineTest {
 		assertTrue(refused.err().contains("nothing generated"), refused::all);
 		assertFalse(Files.exists(directory.resolve("other")));
 	}
+
+	@Test
+	void versionNamesKseAndWhatItRunsOn() {
+		Run run = kse("--version");
+		assertEquals(0, run.code(), run::all);
+		assertTrue(run.out().startsWith("kse "), run::all);
+		assertTrue(run.out().contains("Xtext ") && run.out().contains("Java " + System.getProperty("java.version")), run::all);
+	}
 }
