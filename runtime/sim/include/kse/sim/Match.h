@@ -1,0 +1,171 @@
+#pragma once
+// A simulated SPL match: the world, the referee, and one behaviour process (kse::robot) per
+// robot, stepped in 10 ms ticks; each robot perceives and runs its statechart every third tick
+// (one camera image, 33 per second). Deterministic for a seed: the clock is simulated and the
+// activities run inline.
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <kse/messaging/Clock.h>
+#include <kse/robot/Robot.h>
+#include <kse/sim/Perception.h>
+#include <kse/sim/Referee.h>
+#include <kse/sim/World.h>
+
+namespace kse::sim {
+
+namespace gc {
+class GameControllerLink;
+}
+
+/** A controller instead of a statechart: scripted players, and the benchmark's baseline. */
+using Controller = std::function<robot::MotionCommands(const robot::Perception&)>;
+
+struct PlayerConfig {
+	std::string behaviour;  // a registered statechart, e.g. "Goalie"
+	int number = 1;         // 1 is the goalkeeper
+	std::optional<Pose2> ready;  // kick-off pose in the team frame (own goal at -x); a default by number otherwise
+	Controller controller;  // used when set, instead of the statechart
+};
+
+struct TeamConfig {
+	int number = 0;  // team number (GameController)
+	std::string name;
+	std::vector<PlayerConfig> players;
+};
+
+struct MatchConfig {
+	std::uint64_t seed = 1;
+	TeamConfig home{7, "home", {}};
+	TeamConfig away{8, "away", {}};
+	RefereeConfig referee;
+	int kicking_team = 0;
+	/** Start in PLAYING with the robots at their kick-off poses instead of INITIAL. */
+	bool start_playing = false;
+	/** Log frames this often (s). */
+	double frame_period = 0.1;
+	/** Seconds without a transition (or pinned while walking) after which a robot counts as stuck. */
+	double stuck_seconds = 10;
+};
+
+/** Anything worth a line in the log. */
+struct MatchEvent {
+	double time = 0;
+	std::string type;  // state, goal, ball-out, penalty, unpenalised, placed, half-time, game-stuck, kick, missed-kick, fall, stuck, failure
+	int team = -1;
+	int robot = -1;
+	std::string detail;
+};
+
+class Match;
+
+/** Watches a match: logs, pictures, live views. */
+class MatchObserver {
+public:
+	virtual ~MatchObserver() = default;
+	virtual void OnStart(const Match&) {}
+	virtual void OnFrame(const Match&) {}
+	virtual void OnEvent(const Match&, const MatchEvent&) {}
+	virtual void OnEnd(const Match&) {}
+};
+
+class Match {
+public:
+	static constexpr double kTick = 0.01;   // s of simulated time a Step() advances
+	static constexpr int kTicksPerFrame = 3;  // a robot perceives and decides every third tick
+
+	explicit Match(MatchConfig config);
+	~Match();
+	Match(const Match&) = delete;
+	Match& operator=(const Match&) = delete;
+
+	void AddObserver(MatchObserver& observer) { observers_.push_back(&observer); }
+	/** Follows a real GameController's packets and answers it for every robot. */
+	void Listen(gc::GameControllerLink& link);
+
+	/** One tick. The first call starts the match (observers see OnStart). */
+	void Step();
+	/** Steps until FINISHED or until {@code seconds} of simulated time have passed; observers see OnEnd. */
+	void Run(double seconds, const std::function<void(const Match&)>& progress = {}, bool realtime = false);
+	void End();
+
+	// what observers and tests read
+	double Time() const { return static_cast<double>(ticks_) * kTick; }
+	std::uint64_t Ticks() const { return ticks_; }
+	const MatchConfig& Config() const { return config_; }
+	World& GetWorld() { return world_; }
+	const World& GetWorld() const { return world_; }
+	Referee& GetReferee() { return referee_; }
+	const Referee& GetReferee() const { return referee_; }
+	std::size_t RobotCount() const { return players_.size(); }
+	/** "home-1", "away-5": team and player number. */
+	const std::string& RobotId(std::size_t robot) const { return players_[robot]->id; }
+	const std::string& Behaviour(std::size_t robot) const { return players_[robot]->config.behaviour; }
+	const TeamConfig& Team(int team) const { return team == 0 ? config_.home : config_.away; }
+	std::vector<std::string> ActiveStates(std::size_t robot) const;
+	/** Transitions the robot's statechart took since the last frame. */
+	const std::vector<std::string>& TransitionsSinceFrame(std::size_t robot) const { return players_[robot]->taken; }
+	const robot::Perception& LastPerception(std::size_t robot) const { return players_[robot]->perception; }
+	const RobotSense& Sense(std::size_t robot) const { return players_[robot]->sense; }
+	/** Kick-off pose of a robot, field frame, for the current kick-off. */
+	Pose2 ReadyPose(std::size_t robot) const;
+	/** Field pose from a team's frame and back (the same mapping both ways). */
+	Pose2 TeamFrame(int team, const Pose2& pose) const;
+
+	const std::vector<MatchEvent>& Events() const { return events_; }
+	std::size_t StuckCount() const { return stuck_; }
+	std::size_t Failures() const;
+	/** Wall-clock seconds spent in the robots' statecharts (perception published, run, commands read). */
+	double EngineSeconds() const { return engine_seconds_; }
+
+private:
+	struct Player {
+		PlayerConfig config;
+		std::string id;
+		std::unique_ptr<robot::Robot> robot;
+		RobotSense sense;
+		robot::Perception perception;
+		std::vector<std::string> taken;
+		double last_transition = 0;
+		double pinned = 0;
+		Vec2 last_position;
+		bool stuck = false;
+		Player(PlayerConfig c, std::string i, Random random) : config(std::move(c)), id(std::move(i)), sense(random) {}
+	};
+
+	void Start();
+	void Think(std::size_t robot);
+	void Emit(MatchEvent event);
+	void Apply(const std::vector<RefereeEvent>& events);
+	void WatchForStuck(std::size_t robot);
+	std::vector<Pose2> ReadyPoses() const;
+	void ExchangeWithGameController();
+
+	MatchConfig config_;
+	messaging::ManualClock clock_;
+	Random random_;
+	World world_;
+	Random camera_random_{0};
+	Referee referee_;
+	std::vector<std::unique_ptr<Player>> players_;
+	std::vector<MatchObserver*> observers_;
+	std::vector<MatchEvent> events_;
+	gc::GameControllerLink* link_ = nullptr;
+	std::uint64_t ticks_ = 0;
+	bool started_ = false;
+	bool ended_ = false;
+	std::size_t stuck_ = 0;
+	double engine_seconds_ = 0;
+};
+
+/** The default kick-off pose of a player number, team frame; the kick-off taker stands at the centre. */
+Pose2 DefaultReadyPose(int number, bool takes_kick_off);
+
+}  // namespace kse::sim

@@ -1,0 +1,67 @@
+#pragma once
+// What a match leaves behind for people and tools: a JSON-lines log (the input of the live
+// monitor and of replays; format in docs/match-log.md) and an SVG picture of the match.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <kse/sim/Match.h>
+
+namespace kse::sim {
+
+/**
+ * One JSON object a line: "match" (teams, seed, field), then "frame" lines (time, game state,
+ * score, ball, every robot's pose, motion, active states and the transitions taken since the
+ * previous frame) and "event" lines in time order, and a final "result". Numbers are written
+ * with fixed precision, so a seed gives the same bytes.
+ */
+class JsonLinesLog : public MatchObserver {
+public:
+	explicit JsonLinesLog(std::ostream& out) : out_(out) {}
+	void OnStart(const Match& match) override;
+	void OnFrame(const Match& match) override;
+	void OnEvent(const Match& match, const MatchEvent& event) override;
+	void OnEnd(const Match& match) override;
+
+private:
+	std::ostream& out_;
+};
+
+/** The field, every robot's path, the ball's path and the goals, as an SVG image. */
+class SvgPicture : public MatchObserver {
+public:
+	void OnStart(const Match& match) override;
+	void OnFrame(const Match& match) override;
+	void OnEvent(const Match& match, const MatchEvent& event) override;
+	void OnEnd(const Match& match) override;
+	void Write(std::ostream& out) const;
+
+private:
+	struct Path {
+		std::string id;
+		int team = 0;
+		std::vector<std::vector<Vec2>> pieces;  // a new piece after the robot was carried
+		Vec2 last;
+	};
+	struct Goal {
+		double time;
+		int team;
+		Vec2 where;
+		std::string score;
+	};
+	std::vector<Path> robots_;
+	std::vector<Vec2> ball_;
+	std::vector<Goal> goals_;
+	std::string title_;
+	std::string result_;
+	std::vector<std::string> teams_;
+	int frames_ = 0;
+};
+
+/** A JSON string literal. */
+std::string JsonString(const std::string& text);
+/** A number with {@code digits} decimals, "-0.000" written as "0.000". */
+std::string Fixed(double value, int digits = 3);
+
+}  // namespace kse::sim

@@ -1,0 +1,215 @@
+#include <kse/sim/MatchCli.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <statechart_engine/Factories.h>
+#include <kse/sim/GameControllerLink.h>
+#include <kse/sim/MatchLog.h>
+
+namespace kse::sim {
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: kse-match [options]
+Plays a simulated RoboCup SPL match between the registered behaviours of this program.
+
+  --home LIST        home team: Behaviour[:number],... (default Goalie:1,Defender:2,Attacker:3)
+  --away LIST        away team, the same way; "none" for no team (default as home)
+  --seed N           seed of the simulation (default 1); a seed always gives the same match
+  --half SECONDS     PLAYING seconds of a half (default 600)
+  --halves N         1 or 2 (default 1)
+  --duration SECONDS stop after this much simulated time (default: when the game is FINISHED)
+  --start-playing    skip INITIAL, READY and SET: start at the kick-off in PLAYING
+  --log FILE         write the JSON-lines log of the match
+  --svg FILE         write a picture of the match
+  --realtime         run at real speed (to watch it) instead of as fast as possible
+  --gamecontroller   follow a real GameController (UDP 3838 on loopback) and answer on 3939
+  --home-number N, --away-number N   team numbers (default 7 and 8)
+  --list             list the behaviours this program can play
+  --quiet            no progress lines
+  --help
+)";
+
+struct UsageError : std::runtime_error {
+	using std::runtime_error::runtime_error;
+};
+
+std::vector<PlayerConfig> ParseTeam(const std::string& text) {
+	std::vector<PlayerConfig> players;
+	if (text == "none") return players;
+	std::stringstream list(text);
+	std::string item;
+	int next_number = 1;
+	while (std::getline(list, item, ',')) {
+		if (item.empty()) throw UsageError("empty player in '" + text + "'");
+		PlayerConfig player;
+		const auto colon = item.find(':');
+		player.behaviour = item.substr(0, colon);
+		player.number = next_number;
+		if (colon != std::string::npos) {
+			const std::string number = item.substr(colon + 1);
+			char* end = nullptr;
+			const long value = std::strtol(number.c_str(), &end, 10);
+			if (number.empty() || *end != '\0' || value < 1 || value > 20) {
+				throw UsageError("player number must be 1 to 20 in '" + item + "'");
+			}
+			player.number = static_cast<int>(value);
+		}
+		for (const auto& other : players) {
+			if (other.number == player.number) throw UsageError("two players with number " + std::to_string(player.number) + " in '" + text + "'");
+		}
+		const auto names = statechart_engine::StatechartFactory::Instance().Names();
+		if (std::find(names.begin(), names.end(), player.behaviour) == names.end()) {
+			std::string known;
+			for (const auto& name : names) known += (known.empty() ? "" : ", ") + name;
+			throw UsageError("no behaviour '" + player.behaviour + "' in this program (it has: " + known + ")");
+		}
+		next_number = player.number + 1;
+		players.push_back(player);
+	}
+	if (players.size() > 7) throw UsageError("at most 7 players a team");
+	return players;
+}
+
+double ParseNumber(const std::string& option, const std::string& text, double low, double high) {
+	char* end = nullptr;
+	const double value = std::strtod(text.c_str(), &end);
+	if (text.empty() || *end != '\0' || !(value >= low && value <= high)) {
+		throw UsageError(option + " needs a number from " + Fixed(low, 0) + " to " + Fixed(high, 0) + ", not '" + text + "'");
+	}
+	return value;
+}
+
+/** Writes a file whole or not at all: to a temporary name first, then renamed. */
+void WriteAtomically(const std::string& path, const std::string& content) {
+	const std::string temporary = path + ".tmp";
+	{
+		std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+		if (!out) throw std::runtime_error("cannot write " + path);
+		out << content;
+		if (!out.flush()) throw std::runtime_error("cannot write " + path);
+	}
+	if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+int RunMatchCli(int argc, char** argv) {
+	MatchConfig config;
+	std::string home = "Goalie:1,Defender:2,Attacker:3";
+	std::string away;
+	std::string log_path, svg_path;
+	double duration = 0;
+	bool realtime = false, quiet = false, gamecontroller = false;
+	try {
+		for (int i = 1; i < argc; ++i) {
+			const std::string option = argv[i];
+			auto value = [&]() -> std::string {
+				if (i + 1 >= argc) throw UsageError(option + " needs a value");
+				return argv[++i];
+			};
+			if (option == "--help" || option == "-h") {
+				std::cout << kUsage;
+				return 0;
+			} else if (option == "--list") {
+				for (const auto& name : statechart_engine::StatechartFactory::Instance().Names()) std::cout << name << "\n";
+				return 0;
+			} else if (option == "--home") {
+				home = value();
+			} else if (option == "--away") {
+				away = value();
+			} else if (option == "--seed") {
+				config.seed = static_cast<std::uint64_t>(ParseNumber(option, value(), 0, 1e15));
+			} else if (option == "--half") {
+				config.referee.half_seconds = ParseNumber(option, value(), 1, 3600);
+			} else if (option == "--halves") {
+				config.referee.halves = static_cast<int>(ParseNumber(option, value(), 1, 2));
+			} else if (option == "--duration") {
+				duration = ParseNumber(option, value(), 0.01, 36000);
+			} else if (option == "--start-playing") {
+				config.start_playing = true;
+			} else if (option == "--log") {
+				log_path = value();
+			} else if (option == "--svg") {
+				svg_path = value();
+			} else if (option == "--realtime") {
+				realtime = true;
+			} else if (option == "--gamecontroller") {
+				gamecontroller = true;
+			} else if (option == "--home-number") {
+				config.home.number = static_cast<int>(ParseNumber(option, value(), 1, 255));
+			} else if (option == "--away-number") {
+				config.away.number = static_cast<int>(ParseNumber(option, value(), 1, 255));
+			} else if (option == "--quiet" || option == "-q") {
+				quiet = true;
+			} else {
+				throw UsageError("unknown option '" + option + "'");
+			}
+		}
+		config.home.players = ParseTeam(home);
+		config.away.players = ParseTeam(away.empty() ? home : away);
+		if (config.home.players.empty() && config.away.players.empty()) throw UsageError("both teams are empty");
+		if (config.home.number == config.away.number) throw UsageError("the teams need different numbers");
+	} catch (const UsageError& error) {
+		std::cerr << "kse-match: " << error.what() << "\n" << kUsage;
+		return 2;
+	}
+	config.home.name = "home";
+	config.away.name = "away";
+
+	try {
+		std::unique_ptr<gc::GameControllerLink> link;
+		Match match(config);
+		std::ostringstream log_text;
+		JsonLinesLog log(log_text);
+		SvgPicture picture;
+		if (!log_path.empty()) match.AddObserver(log);
+		if (!svg_path.empty()) match.AddObserver(picture);
+		if (gamecontroller) {
+			link = std::make_unique<gc::GameControllerLink>(gc::GameControllerLink::Options{});
+			match.Listen(*link);
+			realtime = true;  // a GameController runs in real time
+			if (!quiet) std::cerr << "kse-match: following the GameController on 127.0.0.1:" << link->ListenPort() << "\n";
+		}
+		const auto wall_start = std::chrono::steady_clock::now();
+		double next_report = realtime ? 5 : 60;
+		match.Run(duration, [&](const Match& m) {
+			if (quiet || m.Time() < next_report) return;
+			next_report = m.Time() + (realtime ? 5 : 60);
+			const auto& score = m.GetReferee().Score();
+			std::cerr << "  " << Fixed(m.Time(), 0) << " s  " << ToString(m.GetReferee().State()) << "  " << score[0] << ":" << score[1]
+			          << "  " << Fixed(m.GetReferee().SecsRemaining(), 0) << " s left\n";
+		}, realtime);
+		const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+		if (!log_path.empty()) WriteAtomically(log_path, log_text.str());
+		if (!svg_path.empty()) {
+			std::ostringstream svg;
+			picture.Write(svg);
+			WriteAtomically(svg_path, svg.str());
+		}
+		const auto& score = match.GetReferee().Score();
+		std::cout << config.home.name << " " << score[0] << " : " << score[1] << " " << config.away.name << " after " << Fixed(match.Time(), 1)
+		          << " s (seed " << config.seed << ", " << ToString(match.GetReferee().State()) << ")\n";
+		for (const auto& event : match.Events()) {
+			if (event.type == "goal") std::cout << "  goal at " << Fixed(event.time, 1) << " s by " << (event.robot >= 0 ? match.RobotId(static_cast<std::size_t>(event.robot)) : "?") << "\n";
+		}
+		std::cout << "  stuck robots: " << match.StuckCount() << ", behaviour failures: " << match.Failures()
+		          << ", real-time factor: " << Fixed(match.Time() / std::max(wall, 1e-9), 0) << "x\n";
+		if (!log_path.empty()) std::cout << "  log: " << log_path << "\n";
+		if (!svg_path.empty()) std::cout << "  picture: " << svg_path << "\n";
+		return match.Failures() == 0 ? 0 : 1;
+	} catch (const std::exception& error) {
+		std::cerr << "kse-match: " << error.what() << "\n";
+		return 2;
+	}
+}
+
+}  // namespace kse::sim

@@ -1,0 +1,105 @@
+#pragma once
+// Small statecharts written against the engine for the simulator's own tests (the real
+// behaviours live in examples/): a Chaser that walks to the ball and kicks it towards the
+// opponent goal, and a Sleeper whose statechart stops after its first state.
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <kse/messages/all.h>
+#include <kse/robot/Robot.h>
+#include <statechart_engine/Factories.h>
+#include <statechart_engine/Statechart.h>
+#include <statechart_engine/TimeoutAction.h>
+
+namespace sim_test {
+
+class Chase : public statechart_engine::IActivity {
+public:
+	void UserInit() override { _blk->Subscribe("worldstate"); }
+	int Execute() override {
+		const auto game = _blk->ReadState<GameStateMessage>("worldstate");
+		const auto world = _blk->ReadData<WorldInfo>("worldstate");
+		MotionWalkMessage walk;
+		walk.set_command("setWalkTargetVelocity");
+		float vx = 0, vy = 0, vt = 0;
+		if (game && game->player_state() == 3 && world && world->balls_size() > 0) {
+			const auto& ball = world->balls(0);
+			const auto& me = world->myposition();
+			const float goal = std::atan2(-me.y(), 4.5f - me.x()) - me.phi();
+			if (std::hypot(ball.relativex() - 0.13f, ball.relativey() - 0.04f) < 0.05f && std::fabs(goal) < 0.5f) {
+				MotionActionMessage kick;
+				kick.set_command("KickForwardLeft");
+				_blk->Publish("motion", kse::messaging::Kind::Signal, kick);
+			}
+			vx = 3 * (ball.relativex() - 0.13f);
+			vy = 3 * (ball.relativey() - 0.04f);
+			vt = std::hypot(ball.relativex(), ball.relativey()) < 0.4f ? goal : std::atan2(ball.relativey(), ball.relativex());
+		} else if (game && game->player_state() == 3) {
+			vt = 0.5f;  // look for the ball
+		}
+		walk.add_parameter(vx);
+		walk.add_parameter(vy);
+		walk.add_parameter(vt);
+		_blk->Publish("motion", kse::messaging::Kind::Signal, walk);
+		MotionHeadMessage head;
+		head.set_command("setHead");
+		head.add_parameter(0);
+		head.add_parameter(0.35f);
+		_blk->Publish("motion", kse::messaging::Kind::Signal, head);
+		return 0;
+	}
+	std::string GetName() override { return "Chase"; }
+};
+
+class Idle : public statechart_engine::IActivity {
+public:
+	int Execute() override { return 0; }
+	std::string GetName() override { return "Idle"; }
+};
+
+class Every : public statechart_engine::ICondition {
+public:
+	bool Eval() override { return _blk->TimeoutExpired("tick"); }
+};
+
+// START -> Chase, and Chase again every 100 ms
+class ChaserChart : public statechart_engine::IStatechart {
+public:
+	ChaserChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_chaser", hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* chase = chart_.Add<BasicState>("Node_Chase", &chart_, std::make_unique<Chase>());
+		chart_.AddTransition(start, chase, nullptr, std::make_unique<TimeoutAction>("tick", 100));
+		chart_.AddTransition(chase, chase, std::make_unique<Every>(), std::make_unique<TimeoutAction>("tick", 100));
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
+// START -> Idle, then nothing: a behaviour that is stuck
+class SleeperChart : public statechart_engine::IStatechart {
+public:
+	SleeperChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_sleeper", hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* idle = chart_.Add<BasicState>("Node_Idle", &chart_, std::make_unique<Idle>());
+		chart_.AddTransition(start, idle);
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
+inline const statechart_engine::StatechartRegistrar<ChaserChart> chaser_registrar("Chaser");
+inline const statechart_engine::StatechartRegistrar<SleeperChart> sleeper_registrar("Sleeper");
+
+}  // namespace sim_test
