@@ -616,7 +616,9 @@ bool EngineCore::RunUntilStable(std::size_t max_transitions) {
       }
     }
     std::unique_lock<std::mutex> lock(wake_mutex_);
-    if (running_activities_.load(std::memory_order_acquire) == 0) {
+    // Stable only if nothing happened since these steps began: an activity that finished
+    // after the last Step() leaves running_activities_ at 0 but still needs a step.
+    if (running_activities_.load(std::memory_order_acquire) == 0 && wake_generation_ == seen) {
       return true;
     }
     wake_cv_.wait(lock, [&] {
