@@ -1,0 +1,76 @@
+package org.kse.ui.tests;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.GC;
+import org.eclipse.swt.graphics.Image;
+import org.eclipse.swt.graphics.ImageLoader;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.ui.PlatformUI;
+
+/** What the UI tests share: waiting while the workbench runs, and screenshots a person can look at. */
+final class Ui {
+
+	private Ui() {
+	}
+
+	static Display display() {
+		return PlatformUI.getWorkbench().getDisplay();
+	}
+
+	/** Runs the event loop until the condition holds; false after {@code millis}. */
+	static boolean waitUntil(BooleanSupplier condition, long millis) {
+		long end = System.currentTimeMillis() + millis;
+		Display display = display();
+		while (System.currentTimeMillis() < end) {
+			if (condition.getAsBoolean()) {
+				return true;
+			}
+			if (!display.readAndDispatch()) {
+				try {
+					Thread.sleep(5);
+				} catch (InterruptedException e) {
+					Thread.currentThread().interrupt();
+					return false;
+				}
+			}
+		}
+		return condition.getAsBoolean();
+	}
+
+	/** Lets the workbench paint what changed. */
+	static void settle(long millis) {
+		waitUntil(() -> false, millis);
+	}
+
+	/** The workbench window as a PNG under target/screenshots (system property kse.screenshots). */
+	static Path screenshot(String name) {
+		settle(300);
+		Display display = display();
+		Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
+		Rectangle bounds = shell.getBounds();
+		Image image = new Image(display, bounds.width, bounds.height);
+		GC gc = new GC(display);
+		try {
+			gc.copyArea(image, bounds.x, bounds.y);
+			Path folder = Path.of(System.getProperty("kse.screenshots", "target/screenshots"));
+			Files.createDirectories(folder);
+			Path file = folder.resolve(name + ".png");
+			ImageLoader loader = new ImageLoader();
+			loader.data = new org.eclipse.swt.graphics.ImageData[] { image.getImageData() };
+			loader.save(file.toString(), SWT.IMAGE_PNG);
+			return file;
+		} catch (IOException e) {
+			throw new AssertionError("cannot save the screenshot " + name, e);
+		} finally {
+			gc.dispose();
+			image.dispose();
+		}
+	}
+}
