@@ -22,6 +22,10 @@ public class KsePerspective implements IPerspectiveFactory {
 		layout.addShowViewShortcut(IPageLayout.ID_PROBLEM_VIEW);
 		layout.addShowViewShortcut(IPageLayout.ID_PROP_SHEET);
 		layout.addShowViewShortcut(IPageLayout.ID_OUTLINE);
+		layout.addNewWizardShortcut("org.kse.ui.wizards.project");
+		layout.addNewWizardShortcut("org.kse.ui.wizards.formula");
+		layout.addNewWizardShortcut("org.kse.ui.wizards.fromFormula");
+		layout.addNewWizardShortcut("org.kse.ui.wizards.statechart");
 		layout.addNewWizardShortcut("org.eclipse.ui.wizards.new.project");
 		layout.addNewWizardShortcut("org.eclipse.ui.wizards.new.file");
 	}

@@ -52,8 +52,12 @@ final class Ui {
 	/** The workbench window as a PNG under target/screenshots (system property kse.screenshots). */
 	static Path screenshot(String name) {
 		settle(300);
+		return screenshotOf(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell(), name);
+	}
+
+	/** A window (a dialog, the workbench) as a PNG under target/screenshots. */
+	static Path screenshotOf(Shell shell, String name) {
 		Display display = display();
-		Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
 		Rectangle bounds = shell.getBounds();
 		Image image = new Image(display, bounds.width, bounds.height);
 		GC gc = new GC(display);

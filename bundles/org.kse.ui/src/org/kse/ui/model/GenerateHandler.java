@@ -1,0 +1,106 @@
+package org.kse.ui.model;
+
+import java.io.IOException;
+import java.util.List;
+
+import org.eclipse.core.commands.AbstractHandler;
+import org.eclipse.core.commands.ExecutionEvent;
+import org.eclipse.core.resources.IContainer;
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IFolder;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.resources.WorkspaceJob;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.core.runtime.IProgressMonitor;
+import org.eclipse.core.runtime.IStatus;
+import org.eclipse.core.runtime.Status;
+import org.eclipse.core.runtime.SubMonitor;
+import org.eclipse.jface.window.Window;
+import org.eclipse.ui.handlers.HandlerUtil;
+import org.eclipse.ui.progress.IProgressConstants;
+import org.kse.generator.monas.MonasGenerator;
+import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
+
+/**
+ * "Generate Code": Monas C++ of the model into its source folder. The first time (or with the
+ * command's {@code configure} parameter) a dialog connects the model to a folder; KSE remembers it.
+ * The job's summary (files written, unchanged, kept) stays in the Progress view.
+ */
+public class GenerateHandler extends AbstractHandler {
+
+	public static final String CONFIGURE = "org.kse.ui.generate.configure";
+
+	@Override
+	public Object execute(ExecutionEvent event) throws org.eclipse.core.commands.ExecutionException {
+		List<IFile> files = ModelFiles.of(event);
+		if (files.size() != 1) {
+			return null;
+		}
+		IFile file = files.get(0);
+		IContainer folder = ModelFiles.sourceFolder(file);
+		boolean configure = Boolean.parseBoolean(event.getParameter(CONFIGURE));
+		if (folder == null || configure) {
+			GenerateDialog dialog = new GenerateDialog(HandlerUtil.getActiveShellChecked(event), file);
+			if (dialog.open() != Window.OK) {
+				return null;
+			}
+			folder = dialog.folder();
+			try {
+				ModelFiles.remember(file, folder, dialog.logger());
+			} catch (CoreException e) {
+				throw new org.eclipse.core.commands.ExecutionException("cannot remember the source folder of " + file.getName(), e);
+			}
+		}
+		schedule(file, folder, ModelFiles.logger(file));
+		return null;
+	}
+
+	private static void createFolder(IFolder folder, IProgressMonitor monitor) throws CoreException {
+		if (folder.getParent() instanceof IFolder parent && !parent.exists()) {
+			createFolder(parent, monitor);
+		}
+		folder.create(true, true, monitor);
+	}
+
+	/** Generates in a job; public for callers that know the folder already (tests, other commands). */
+	public static WorkspaceJob schedule(IFile file, IContainer folder, boolean logger) {
+		WorkspaceJob job = new WorkspaceJob("Generating code for " + file.getName()) {
+			@Override
+			public IStatus runInWorkspace(IProgressMonitor monitor) throws CoreException {
+				SubMonitor progress = SubMonitor.convert(monitor, 100);
+				try {
+					if (folder instanceof IFolder newFolder && !newFolder.exists()) {
+						createFolder(newFolder, progress.split(1));
+					}
+					Model model = StatechartResources.load(ModelFiles.location(file));
+					int[] problems = ModelMarkers.validate(file, model);
+					if (problems[0] > 0) {
+						return Status.error(file.getName() + " has " + problems[0] + (problems[0] == 1 ? " error" : " errors")
+								+ "; nothing was generated. See the Problems view.");
+					}
+					SubMonitor generation = progress.split(90);
+					MonasGenerator.Report report = MonasGenerator.generate(model, ModelFiles.location(folder), new MonasGenerator.Options(logger),
+							(step, steps, what) -> {
+								generation.setWorkRemaining(Math.max(1, steps - step + 1));
+								generation.subTask(what);
+								generation.worked(1);
+							});
+					folder.refreshLocal(IResource.DEPTH_INFINITE, progress.split(10));
+					return new Status(IStatus.OK, "org.kse.ui", "Generated " + model.getName() + " into " + folder.getFullPath() + ": "
+							+ report.written().size() + " written, " + report.unchanged().size() + " unchanged, " + report.kept().size()
+							+ " activities kept" + (report.removed().isEmpty() ? "" : ", " + report.removed().size() + " stale removed"));
+				} catch (IOException e) {
+					return Status.error("cannot generate " + file.getFullPath() + ": " + e.getMessage(), e);
+				} catch (MonasGenerator.ModelHasErrorsException e) {
+					return Status.error(file.getName() + " has errors; nothing was generated: " + String.join("; ", e.errors()));
+				}
+			}
+		};
+		job.setRule(file.getWorkspace().getRoot());
+		job.setUser(true);
+		job.setProperty(IProgressConstants.KEEP_PROPERTY, Boolean.TRUE);
+		job.schedule();
+		return job;
+	}
+}

@@ -1,0 +1,65 @@
+package org.kse.ui.model;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.resources.IWorkspace;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.kse.messages.MessageCatalog;
+import org.kse.messages.StandardMessages;
+import org.kse.model.statechart.Model;
+import org.kse.validation.ModelValidation;
+
+/** Validates a statechart and shows each diagnostic as a problem marker that names its element. */
+public final class ModelMarkers {
+
+	public static final String MARKER = "org.kse.ui.modelProblem";
+	/** URI fragment of the model element a marker is about. */
+	public static final String ELEMENT = "org.kse.ui.element";
+
+	private ModelMarkers() {
+	}
+
+	/** Replaces the model's markers by its diagnostics; returns {errors, warnings}. */
+	public static int[] validate(IFile file, Model model) throws CoreException {
+		List<Path> messageFolders = new ArrayList<>();
+		var sourceFolder = ModelFiles.sourceFolder(file);
+		if (sourceFolder != null) {
+			messageFolders.add(ModelFiles.location(sourceFolder).resolve("messages"));
+		}
+		MessageCatalog catalog = StandardMessages.catalog(messageFolders);
+		Diagnostic diagnostics = ModelValidation.validate(model, catalog);
+		int[] counts = new int[2];
+		file.getWorkspace().run(monitor -> {
+			file.deleteMarkers(MARKER, false, 0);
+			for (Diagnostic diagnostic : diagnostics.getChildren()) {
+				boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
+				counts[error ? 0 : 1]++;
+				IMarker marker = file.createMarker(MARKER);
+				marker.setAttribute(IMarker.MESSAGE, diagnostic.getMessage());
+				marker.setAttribute(IMarker.SEVERITY, error ? IMarker.SEVERITY_ERROR : IMarker.SEVERITY_WARNING);
+				EObject element = diagnostic.getData().stream().filter(EObject.class::isInstance).map(EObject.class::cast).findFirst().orElse(null);
+				if (element != null && element.eResource() != null) {
+					marker.setAttribute(ELEMENT, EcoreUtil.getURI(element).fragment());
+					String label = org.kse.validation.Labels.describe(element);
+					marker.setAttribute(IMarker.LOCATION, label);
+				}
+			}
+		}, file, IWorkspace.AVOID_UPDATE, null);
+		return counts;
+	}
+
+	/** A marker on the file itself, for a model that cannot be read. */
+	public static void unreadable(IFile file, String message) throws CoreException {
+		file.deleteMarkers(MARKER, false, 0);
+		IMarker marker = file.createMarker(MARKER);
+		marker.setAttribute(IMarker.MESSAGE, message);
+		marker.setAttribute(IMarker.SEVERITY, IMarker.SEVERITY_ERROR);
+	}
+}

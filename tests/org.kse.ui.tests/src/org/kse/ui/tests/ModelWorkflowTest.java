@@ -1,0 +1,246 @@
+package org.kse.ui.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.resources.ResourcesPlugin;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.jface.viewers.StructuredSelection;
+import org.eclipse.jface.wizard.WizardDialog;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.Text;
+import org.eclipse.ui.IPageLayout;
+import org.eclipse.ui.IWorkbenchPage;
+import org.eclipse.ui.PlatformUI;
+import org.eclipse.ui.handlers.IHandlerService;
+import org.eclipse.ui.navigator.CommonNavigator;
+import org.junit.jupiter.api.MethodOrderer.OrderAnnotation;
+import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
+import org.kse.ui.model.ModelFiles;
+import org.kse.ui.model.ModelMarkers;
+import org.kse.ui.wizards.NewProjectWizard;
+
+/**
+ * A team's project: created with the New KSE Project wizard and its examples, a model validated
+ * (a broken guard is marked with the transition's label), labeled, and generated into the
+ * project's source folder, connected through the Generate dialog the first time.
+ */
+@TestMethodOrder(OrderAnnotation.class)
+class ModelWorkflowTest {
+
+	private static IProject project;
+
+	private static IWorkbenchPage page() {
+		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+	}
+
+	private static <T extends Control> List<T> find(Composite root, Class<T> type) {
+		List<T> found = new ArrayList<>();
+		for (Control child : root.getChildren()) {
+			if (type.isInstance(child)) {
+				found.add(type.cast(child));
+			}
+			if (child instanceof Composite composite) {
+				found.addAll(find(composite, type));
+			}
+		}
+		return found;
+	}
+
+	private static Button button(Shell shell, String label) {
+		return find(shell, Button.class).stream().filter(button -> button.getText().replace("&", "").equals(label)).findFirst()
+				.orElseThrow(() -> new AssertionError("no button " + label + " in " + shell.getText()));
+	}
+
+	private static void press(Button button) {
+		button.notifyListeners(SWT.Selection, null);
+	}
+
+	/** Selects a file in the Project Explorer, so that commands work on it as a user's click would. */
+	private static void select(IFile file) throws Exception {
+		CommonNavigator explorer = (CommonNavigator) page().showView(IPageLayout.ID_PROJECT_EXPLORER);
+		explorer.selectReveal(new StructuredSelection(file));
+		page().activate(explorer);
+		Ui.settle(300);
+	}
+
+	private static void run(String command) throws Exception {
+		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(command, null);
+	}
+
+	private static List<IMarker> problems(IFile file, int severity) throws CoreException {
+		List<IMarker> found = new ArrayList<>();
+		for (IMarker marker : file.findMarkers(ModelMarkers.MARKER, false, IResource.DEPTH_ZERO)) {
+			if (marker.getAttribute(IMarker.SEVERITY, -1) == severity) {
+				found.add(marker);
+			}
+		}
+		return found;
+	}
+
+	@Test
+	@Order(1)
+	void theNewProjectWizardCreatesASourceTreeWithTheExamples() {
+		Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
+		NewProjectWizard wizard = new NewProjectWizard();
+		wizard.init(PlatformUI.getWorkbench(), StructuredSelection.EMPTY);
+		WizardDialog dialog = new WizardDialog(shell, wizard);
+		dialog.setBlockOnOpen(false);
+		dialog.open();
+		Text name = find(dialog.getShell(), Text.class).get(0);
+		name.setText("Team");
+		Ui.settle(200);
+		Ui.screenshotOf(dialog.getShell(), "10-new-kse-project-wizard");
+		press(button(dialog.getShell(), "Finish"));
+		assertTrue(Ui.waitUntil(() -> dialog.getShell() == null || dialog.getShell().isDisposed(), 20_000), "the wizard finishes");
+
+		project = ResourcesPlugin.getWorkspace().getRoot().getProject("Team");
+		assertTrue(project.isOpen());
+		for (String folder : List.of("models", "src/statecharts", "src/activities", "src/messages")) {
+			assertTrue(project.getFolder(folder).exists(), folder);
+		}
+		for (String file : List.of("models/Goalie.txt", "models/Goalie.stct", "models/Attacker.stct", "models/Defender.txt",
+				"src/activities/Kick/Kick.cpp", "src/activities/common/RobotIO.h")) {
+			assertTrue(project.getFile(file).exists(), file);
+		}
+		assertEquals("/Team/src", ModelFiles.sourceFolder(project.getFile("models/Goalie.stct")).getFullPath().toString(),
+				"the example models are connected to the project's source folder");
+		Ui.screenshot("11-project-with-examples");
+	}
+
+	@Test
+	@Order(2)
+	void validateMarksABrokenGuardWithTheTransitionsLabel() throws Exception {
+		IFile goalie = project.getFile("models/Goalie.stct");
+		select(goalie);
+		run("org.kse.ui.validate");
+		assertTrue(Ui.waitUntil(Job::noneRunning, 20_000));
+		assertEquals(List.of(), problems(goalie, IMarker.SEVERITY_ERROR), "the Goalie example is valid");
+
+		Path file = Path.of(goalie.getLocationURI());
+		String text = Files.readString(file);
+		String broken = text.replaceFirst("ballfound\\(\\)>0", "ballfound()>");
+		assertTrue(!broken.equals(text), "a guard to break");
+		Files.writeString(file, broken);
+		goalie.refreshLocal(IResource.DEPTH_ZERO, null);
+		run("org.kse.ui.validate");
+		assertTrue(Ui.waitUntil(() -> {
+			try {
+				return !problems(goalie, IMarker.SEVERITY_ERROR).isEmpty();
+			} catch (CoreException e) {
+				return false;
+			}
+		}, 20_000), "the broken guard is marked");
+		IMarker marker = problems(goalie, IMarker.SEVERITY_ERROR).get(0);
+		assertTrue(marker.getAttribute(IMarker.MESSAGE, "").contains("_TO_"), () -> "names the transition: " + marker.getAttribute(IMarker.MESSAGE, ""));
+		assertNotNull(marker.getAttribute(ModelMarkers.ELEMENT, null), "points at the model element");
+		page().showView(IPageLayout.ID_PROBLEM_VIEW);
+		Ui.settle(1500);
+		Ui.screenshot("12-validation-problem");
+
+		Files.writeString(file, text);
+		goalie.refreshLocal(IResource.DEPTH_ZERO, null);
+		select(goalie);
+		run("org.kse.ui.validate");
+		assertTrue(Ui.waitUntil(() -> {
+			try {
+				return problems(goalie, IMarker.SEVERITY_ERROR).isEmpty();
+			} catch (CoreException e) {
+				return false;
+			}
+		}, 20_000), "fixed, the marker goes");
+	}
+
+	@Test
+	@Order(3)
+	void generateWritesTheStatechartAndKeepsTheActivities() throws Exception {
+		IFile goalie = project.getFile("models/Goalie.stct");
+		IFile kick = project.getFile("src/activities/Kick/Kick.cpp");
+		String handWritten = Files.readString(Path.of(kick.getLocationURI()));
+		select(goalie);
+		run("org.kse.ui.generate");
+		IFile statechart = project.getFile("src/statecharts/Goalie/Goalie.cpp");
+		assertTrue(Ui.waitUntil(statechart::exists, 30_000), "src/statecharts/Goalie/Goalie.cpp generated");
+		assertTrue(Ui.waitUntil(Job::noneRunning, 30_000));
+		assertEquals(handWritten, Files.readString(Path.of(kick.getLocationURI())), "the hand-written Kick activity is kept");
+		assertTrue(project.getFile("src/statecharts/Goalie/CMakeLists.txt").exists());
+		Ui.screenshot("13-generated");
+	}
+
+	@Test
+	@Order(4)
+	void theFirstGenerationOfAModelAsksForItsSourceFolder() throws Exception {
+		IFile attacker = project.getFile("models/Attacker.stct");
+		attacker.setPersistentProperty(ModelFiles.SOURCE_FOLDER, null);
+		select(attacker);
+		boolean[] shown = new boolean[1];
+		Throwable[] failure = new Throwable[1];
+		Ui.display().timerExec(800, () -> {
+			try {
+				Shell dialog = java.util.Arrays.stream(Ui.display().getShells())
+						.filter(shell -> shell.isVisible() && find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
+						.findFirst().orElseThrow(() -> new AssertionError("no Generate dialog"));
+				shown[0] = true;
+				Ui.screenshotOf(dialog, "14-generate-dialog");
+				Text folder = find(dialog, Text.class).stream().filter(text -> text.getText().startsWith("/Team")).findFirst()
+						.orElseThrow(() -> new AssertionError("no source folder field"));
+				folder.setText("/Team/generated");
+				press(button(dialog, "Generate"));
+			} catch (Throwable e) {
+				failure[0] = e;
+				java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
+			}
+		});
+		run("org.kse.ui.generate");
+		if (failure[0] != null) {
+			throw new AssertionError("driving the Generate dialog failed", failure[0]);
+		}
+		assertTrue(shown[0], "the Generate dialog asked for the folder");
+		IFile statechart = project.getFile("generated/statecharts/Attacker/Attacker.cpp");
+		assertTrue(Ui.waitUntil(statechart::exists, 30_000), "generated into the chosen folder");
+		assertEquals("/Team/generated", ModelFiles.sourceFolder(attacker).getFullPath().toString(), "and remembered");
+		assertTrue(Ui.waitUntil(Job::noneRunning, 30_000));
+	}
+
+	@Test
+	@Order(5)
+	void labelRenumbersAndSavesTheModel() throws Exception {
+		IFile defender = project.getFile("models/Defender.stct");
+		Path file = Path.of(defender.getLocationURI());
+		String before = Files.readString(file);
+		Files.writeString(file, before.replace("label=\"0.2\"", "label=\"9.9\""));
+		defender.refreshLocal(IResource.DEPTH_ZERO, null);
+		select(defender);
+		run("org.kse.ui.label");
+		assertTrue(Ui.waitUntil(() -> {
+			try {
+				return Files.readString(file).equals(before);
+			} catch (java.io.IOException e) {
+				return false;
+			}
+		}, 20_000), "labeling gives the example its labels back");
+	}
+
+	/** No KSE job is running or waiting. */
+	private static final class Job {
+		static boolean noneRunning() {
+			return org.eclipse.core.runtime.jobs.Job.getJobManager().isIdle();
+		}
+	}
+}
