@@ -54,6 +54,7 @@ class FormulaChecker implements IReconcilingStrategy {
 		String text = document.get();
 		List<Issue> issues = FormulaLoader.load(text, URI.createPlatformResourceURI(file.getFullPath().toString(), true)).issues();
 		show(file, issues, text.length());
+		editor.textChecked();
 	}
 
 	/** Replaces the file's formula markers by these issues. */

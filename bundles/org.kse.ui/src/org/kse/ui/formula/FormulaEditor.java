@@ -2,6 +2,7 @@ package org.kse.ui.formula;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.ui.editors.text.TextEditor;
+import org.eclipse.ui.views.contentoutline.IContentOutlinePage;
 
 /**
  * The text editor of liveness formulas: colours, problems while typing, content assist
@@ -15,6 +16,53 @@ public class FormulaEditor extends TextEditor {
 	protected void initializeEditor() {
 		super.initializeEditor();
 		setSourceViewerConfiguration(new FormulaViewerConfiguration(this, getPreferenceStore()));
+	}
+
+	@Override
+	protected void initializeKeyBindingScopes() {
+		setKeyBindingScopes(new String[] { "org.kse.ui.formulaEditorScope" });
+	}
+
+	private FormulaOutline outline;
+
+	@Override
+	public <T> T getAdapter(Class<T> adapter) {
+		if (adapter == IContentOutlinePage.class) {
+			if (outline == null || outline.getControl() != null && outline.getControl().isDisposed()) {
+				outline = new FormulaOutline(this);
+			}
+			return adapter.cast(outline);
+		}
+		return super.getAdapter(adapter);
+	}
+
+	/** Called after each check of the text (any thread): the outline follows the text. */
+	void textChecked() {
+		if (outline != null && getSite() != null) {
+			getSite().getShell().getDisplay().asyncExec(() -> {
+				if (outline != null) {
+					outline.update();
+				}
+			});
+		}
+	}
+
+	/** Go to the definition of the name at the cursor (F3). */
+	public boolean openDefinitionAtCursor() {
+		String text = getText();
+		int offset = ((org.eclipse.jface.text.ITextSelection) getSelectionProvider().getSelection()).getOffset();
+		String name = FormulaContentAssist.namePrefix(text, offset);
+		int end = offset;
+		while (end < text.length() && FormulaScanner.isNamePart(text.charAt(end))) {
+			end++;
+		}
+		name = name + text.substring(offset, end);
+		Definitions.Definition definition = name.isEmpty() ? null : Definitions.find(text, name);
+		if (definition == null) {
+			return false;
+		}
+		selectAndReveal(definition.offset(), definition.name().length());
+		return true;
 	}
 
 	/** The workspace file being edited, or null for a file outside the workspace. */

@@ -4,6 +4,7 @@ import org.eclipse.jface.preference.IPreferenceStore;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.contentassist.ContentAssistant;
 import org.eclipse.jface.text.contentassist.IContentAssistant;
+import org.eclipse.jface.text.hyperlink.IHyperlinkDetector;
 import org.eclipse.jface.text.presentation.IPresentationReconciler;
 import org.eclipse.jface.text.presentation.PresentationReconciler;
 import org.eclipse.jface.text.reconciler.IReconciler;
@@ -38,6 +39,11 @@ class FormulaViewerConfiguration extends TextSourceViewerConfiguration {
 		MonoReconciler reconciler = new MonoReconciler(new FormulaChecker(editor), false);
 		reconciler.setDelay(CHECK_DELAY);
 		return reconciler;
+	}
+
+	@Override
+	public IHyperlinkDetector[] getHyperlinkDetectors(ISourceViewer sourceViewer) {
+		return new IHyperlinkDetector[] { new FormulaHyperlinks(editor) };
 	}
 
 	@Override

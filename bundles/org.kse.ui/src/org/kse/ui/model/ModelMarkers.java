@@ -44,8 +44,14 @@ public final class ModelMarkers {
 				IMarker marker = file.createMarker(MARKER);
 				marker.setAttribute(IMarker.MESSAGE, diagnostic.getMessage());
 				marker.setAttribute(IMarker.SEVERITY, error ? IMarker.SEVERITY_ERROR : IMarker.SEVERITY_WARNING);
-				EObject element = diagnostic.getData().stream().filter(EObject.class::isInstance).map(EObject.class::cast).findFirst().orElse(null);
-				if (element != null && element.eResource() != null) {
+				EObject element = null;
+				for (Object data : diagnostic.getData()) {
+					if (data instanceof EObject object) {
+						element = object;
+						break;
+					}
+				}
+				if (element != null) {
 					marker.setAttribute(ELEMENT, EcoreUtil.getURI(element).fragment());
 					String label = org.kse.validation.Labels.describe(element);
 					marker.setAttribute(IMarker.LOCATION, label);

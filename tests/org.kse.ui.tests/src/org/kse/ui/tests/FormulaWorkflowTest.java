@@ -20,14 +20,20 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.ITextOperationTarget;
+import org.eclipse.jface.text.ITextSelection;
 import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.contentassist.ICompletionProposal;
 import org.eclipse.jface.text.source.ISourceViewer;
+import org.eclipse.swt.widgets.Shell;
+import org.eclipse.swt.widgets.Tree;
+import org.eclipse.swt.widgets.TreeItem;
 import org.eclipse.ui.IEditorPart;
+import org.eclipse.ui.IPageLayout;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.handlers.IHandlerService;
 import org.eclipse.ui.ide.IDE;
+import org.eclipse.ui.views.contentoutline.IContentOutlinePage;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.MethodOrderer.OrderAnnotation;
@@ -151,6 +157,35 @@ class FormulaWorkflowTest {
 
 	@Test
 	@Order(4)
+	void theOutlineListsTheCapabilitiesAndF3GoesToADefinition() throws Exception {
+		page().showView(IPageLayout.ID_OUTLINE);
+		page().activate(editor);
+		Ui.settle(500);
+		// the editor's outline page, shown in a window of its own to read it
+		IContentOutlinePage outline = editor.getAdapter(IContentOutlinePage.class);
+		Shell window = new Shell(Ui.display());
+		List<String> shown;
+		try {
+			outline.createControl(window);
+			shown = Arrays.stream(((Tree) outline.getControl()).getItems()).map(TreeItem::getText).toList();
+		} finally {
+			window.dispose();
+		}
+		assertEquals(List.of("goalie = Init.(playing | nonPlaying)+", "nonPlaying = NoPlay .[GoToPosition+]",
+				"playing = Scan+ | ApproachBall+ | Kick | followBall", "followBall = Stare+.[SpecialAction]"), shown);
+
+		String text = document().get();
+		int use = text.indexOf("followBall", text.indexOf("playing = "));
+		editor.selectAndReveal(use + 3, 0);
+		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand("org.kse.ui.openDefinition", null);
+		ITextSelection selection = (ITextSelection) editor.getSelectionProvider().getSelection();
+		assertEquals(text.indexOf("followBall = "), selection.getOffset(), "the cursor is on the definition of followBall");
+		assertEquals("followBall".length(), selection.getLength());
+		Ui.screenshot("06-outline-and-definition");
+	}
+
+	@Test
+	@Order(5)
 	void transformWritesTheStatechartNextToTheFormulas() throws Exception {
 		IFile model = project.getFile("Goalie.stct");
 		assertTrue(!model.exists());

@@ -147,9 +147,11 @@ class ModelWorkflowTest {
 				return false;
 			}
 		}, 20_000), "the broken guard is marked");
-		IMarker marker = problems(goalie, IMarker.SEVERITY_ERROR).get(0);
-		assertTrue(marker.getAttribute(IMarker.MESSAGE, "").contains("_TO_"), () -> "names the transition: " + marker.getAttribute(IMarker.MESSAGE, ""));
-		assertNotNull(marker.getAttribute(ModelMarkers.ELEMENT, null), "points at the model element");
+		List<IMarker> errors = problems(goalie, IMarker.SEVERITY_ERROR);
+		List<String> messages = errors.stream().map(marker -> marker.getAttribute(IMarker.MESSAGE, "")).toList();
+		IMarker marker = errors.stream().filter(error -> error.getAttribute(IMarker.MESSAGE, "").contains("_TO_")).findFirst()
+				.orElseThrow(() -> new AssertionError("no error names the transition: " + messages));
+		assertNotNull(marker.getAttribute(ModelMarkers.ELEMENT, null), () -> "points at the model element: " + messages);
 		page().showView(IPageLayout.ID_PROBLEM_VIEW);
 		Ui.settle(1500);
 		Ui.screenshot("12-validation-problem");

@@ -1,0 +1,60 @@
+package org.kse.ui.formula;
+
+import org.eclipse.jface.text.IRegion;
+import org.eclipse.jface.text.ITextViewer;
+import org.eclipse.jface.text.Region;
+import org.eclipse.jface.text.hyperlink.AbstractHyperlinkDetector;
+import org.eclipse.jface.text.hyperlink.IHyperlink;
+
+/** Ctrl+click (or F3 through the editor's action) on a capability goes to its definition. */
+class FormulaHyperlinks extends AbstractHyperlinkDetector {
+
+	private final FormulaEditor editor;
+
+	FormulaHyperlinks(FormulaEditor editor) {
+		this.editor = editor;
+	}
+
+	@Override
+	public IHyperlink[] detectHyperlinks(ITextViewer viewer, IRegion region, boolean canShowMultipleHyperlinks) {
+		String text = viewer.getDocument().get();
+		int offset = region.getOffset();
+		int start = offset;
+		while (start > 0 && FormulaScanner.isNamePart(text.charAt(start - 1))) {
+			start--;
+		}
+		int end = offset;
+		while (end < text.length() && FormulaScanner.isNamePart(text.charAt(end))) {
+			end++;
+		}
+		if (start == end) {
+			return null;
+		}
+		Definitions.Definition definition = Definitions.find(text, text.substring(start, end));
+		if (definition == null || definition.offset() == start) {
+			return null;
+		}
+		Region word = new Region(start, end - start);
+		return new IHyperlink[] { new IHyperlink() {
+			@Override
+			public IRegion getHyperlinkRegion() {
+				return word;
+			}
+
+			@Override
+			public String getTypeLabel() {
+				return "Definition";
+			}
+
+			@Override
+			public String getHyperlinkText() {
+				return "Go to the definition of " + definition.name();
+			}
+
+			@Override
+			public void open() {
+				editor.selectAndReveal(definition.offset(), definition.name().length());
+			}
+		} };
+	}
+}
