@@ -2,6 +2,7 @@ package org.kse.ui.model;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.Map;
 
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
@@ -21,6 +22,7 @@ import org.eclipse.ui.progress.IProgressConstants;
 import org.kse.generator.monas.MonasGenerator;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
+import org.kse.ui.preferences.KsePreferences;
 
 /**
  * "Generate Code": Monas C++ of the model into its source folder. The first time (or with the
@@ -56,6 +58,26 @@ public class GenerateHandler extends AbstractHandler {
 		return null;
 	}
 
+	/** The original tool let a team plug in its own generator: it gets the model and the folder. */
+	private static IStatus external(IFile file, IContainer folder, IProgressMonitor monitor) throws CoreException, IOException {
+		List<String> command = KsePreferences.command(KsePreferences.node().get(KsePreferences.GENERATOR_COMMAND, ""),
+				Map.of("model", ModelFiles.location(file).toString(), "folder", ModelFiles.location(folder).toString()));
+		Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+		String output = new String(process.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).strip();
+		int exit;
+		try {
+			exit = process.waitFor();
+		} catch (InterruptedException e) {
+			process.destroy();
+			Thread.currentThread().interrupt();
+			return Status.CANCEL_STATUS;
+		}
+		folder.refreshLocal(IResource.DEPTH_INFINITE, monitor);
+		String tail = output.length() > 2000 ? "..." + output.substring(output.length() - 2000) : output;
+		return exit == 0 ? new Status(IStatus.OK, "org.kse.ui", "External generator " + command.get(0) + " done" + (tail.isEmpty() ? "" : ": " + tail))
+				: Status.error("the external generator " + command + " failed with exit code " + exit + (tail.isEmpty() ? "" : ":\n" + tail));
+	}
+
 	private static void createFolder(IFolder folder, IProgressMonitor monitor) throws CoreException {
 		if (folder.getParent() instanceof IFolder parent && !parent.exists()) {
 			createFolder(parent, monitor);
@@ -78,6 +100,9 @@ public class GenerateHandler extends AbstractHandler {
 					if (problems[0] > 0) {
 						return Status.error(file.getName() + " has " + problems[0] + (problems[0] == 1 ? " error" : " errors")
 								+ "; nothing was generated. See the Problems view.");
+					}
+					if (KsePreferences.externalGenerator()) {
+						return external(file, folder, progress.split(100));
 					}
 					SubMonitor generation = progress.split(90);
 					MonasGenerator.Report report = MonasGenerator.generate(model, ModelFiles.location(folder), new MonasGenerator.Options(logger),

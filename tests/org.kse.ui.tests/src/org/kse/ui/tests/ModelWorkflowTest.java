@@ -239,6 +239,58 @@ class ModelWorkflowTest {
 		}, 20_000), "labeling gives the example its labels back");
 	}
 
+	@Test
+	@Order(6)
+	void editActivityOpensItsCppAndOpenFormulaItsFormulas() throws Exception {
+		IFile goalie = project.getFile("models/Goalie.stct");
+		select(goalie);
+		Throwable[] failure = new Throwable[1];
+		Ui.display().timerExec(800, () -> {
+			try {
+				Shell dialog = java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> "Edit Activity".equals(shell.getText())).findFirst()
+						.orElseThrow(() -> new AssertionError("no Edit Activity dialog"));
+				find(dialog, Text.class).get(0).setText("Kick");
+				Ui.settle(300);
+				Ui.screenshotOf(dialog, "15-edit-activity");
+				press(button(dialog, "OK"));
+			} catch (Throwable e) {
+				failure[0] = e;
+				java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
+			}
+		});
+		run("org.kse.ui.editActivity");
+		if (failure[0] != null) {
+			throw new AssertionError("driving the Edit Activity dialog failed", failure[0]);
+		}
+		assertEquals("Kick.cpp", page().getActiveEditor().getEditorInput().getName(), "the activity's C++ is open");
+		Ui.screenshot("16-activity-open");
+
+		select(goalie);
+		run("org.kse.ui.openFormula");
+		assertEquals("Goalie.txt", page().getActiveEditor().getEditorInput().getName());
+		assertTrue(page().getActiveEditor() instanceof org.kse.ui.formula.FormulaEditor);
+		page().closeAllEditors(false);
+	}
+
+	@Test
+	@Order(7)
+	void anExternalGeneratorFromThePreferencesGetsTheModelAndTheFolder() throws Exception {
+		var preferences = org.kse.ui.preferences.KsePreferences.node();
+		preferences.put(org.kse.ui.preferences.KsePreferences.GENERATOR, org.kse.ui.preferences.KsePreferences.EXTERNAL);
+		preferences.put(org.kse.ui.preferences.KsePreferences.GENERATOR_COMMAND, "sh -c \"echo generated from {model} > '{folder}/external.txt'\"");
+		try {
+			IFile goalie = project.getFile("models/Goalie.stct");
+			select(goalie);
+			run("org.kse.ui.generate");
+			IFile output = project.getFile("src/external.txt");
+			assertTrue(Ui.waitUntil(output::exists, 30_000), "the external generator ran and the folder was refreshed");
+			assertEquals("generated from " + Path.of(goalie.getLocationURI()), Files.readString(Path.of(output.getLocationURI())).strip());
+		} finally {
+			preferences.remove(org.kse.ui.preferences.KsePreferences.GENERATOR);
+			preferences.remove(org.kse.ui.preferences.KsePreferences.GENERATOR_COMMAND);
+		}
+	}
+
 	/** No KSE job is running or waiting. */
 	private static final class Job {
 		static boolean noneRunning() {
