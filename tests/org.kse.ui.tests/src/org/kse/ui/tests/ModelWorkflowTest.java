@@ -291,6 +291,52 @@ class ModelWorkflowTest {
 		}
 	}
 
+	@Test
+	@Order(8)
+	void theTreeEditorEditsAPropertyWithUndoRedoAndSave() throws Exception {
+		IFile defender = project.getFile("models/Defender.stct");
+		var part = org.eclipse.ui.ide.IDE.openEditor(page(), defender);
+		var editor = (org.kse.ui.model.editor.StatechartEditor) part;
+		var tree = editor.getViewer().getTree();
+		assertTrue(tree.getItem(0).getText().startsWith("0  defender : OR"), tree.getItem(0).getText());
+		assertTrue(tree.getItem(tree.getItemCount() - 1).getText().startsWith("Transitions ("));
+		org.kse.model.statechart.Node init = null;
+		for (var contents = editor.getModel().eAllContents(); contents.hasNext();) {
+			if (contents.next() instanceof org.kse.model.statechart.Node node && "Init".equals(node.getName())) {
+				init = node;
+			}
+		}
+		assertNotNull(init);
+		editor.getViewer().setSelection(new StructuredSelection(init), true);
+		page().showView(IPageLayout.ID_PROP_SHEET);
+		page().activate(editor);
+		var properties = editor.propertySource(init);
+		properties.setPropertyValue("name", "Initialise");
+		Ui.settle(300);
+		assertEquals("Initialise", init.getName());
+		assertTrue(editor.isDirty());
+		assertTrue(java.util.Arrays.stream(tree.getItems()).flatMap(item -> java.util.Arrays.stream(item.getItems()))
+				.anyMatch(item -> item.getText().contains("Initialise")), "the tree shows the new name");
+		Ui.screenshot("17-tree-editor-and-properties");
+
+		var actions = editor.getEditorSite().getActionBars();
+		actions.getGlobalActionHandler(org.eclipse.ui.actions.ActionFactory.UNDO.getId()).run();
+		Ui.settle(200);
+		assertEquals("Init", init.getName(), "undone");
+		assertTrue(!editor.isDirty(), "back to the saved state");
+		actions.getGlobalActionHandler(org.eclipse.ui.actions.ActionFactory.REDO.getId()).run();
+		Ui.settle(200);
+		assertEquals("Initialise", init.getName(), "redone");
+		properties.setPropertyValue("type", 4); // the combo's index of a kind, as the Properties view sets it
+		assertEquals(org.kse.model.NodeKind.values()[4].name(), init.getType());
+		actions.getGlobalActionHandler(org.eclipse.ui.actions.ActionFactory.UNDO.getId()).run();
+		editor.doSave(null);
+		assertTrue(!editor.isDirty());
+		String saved = Files.readString(Path.of(defender.getLocationURI()));
+		assertTrue(saved.contains("name=\"Initialise\" label=\"0.2\" type=\"BASIC\""), "saved with the new name and the old kind");
+		page().closeAllEditors(false);
+	}
+
 	/** No KSE job is running or waiting. */
 	private static final class Job {
 		static boolean noneRunning() {
