@@ -1,6 +1,7 @@
 package org.kse.ui.formula;
 
 import java.util.List;
+import java.util.Map;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IMarker;
@@ -66,15 +67,13 @@ class FormulaChecker implements IReconcilingStrategy {
 				}
 				file.deleteMarkers(MARKER, false, 0);
 				for (Issue issue : issues) {
-					IMarker marker = file.createMarker(MARKER);
-					marker.setAttribute(IMarker.MESSAGE, issue.getMessage());
-					marker.setAttribute(IMarker.SEVERITY, severity(issue.getSeverity()));
-					marker.setAttribute(IMarker.LINE_NUMBER, issue.getLineNumber() == null ? 1 : issue.getLineNumber());
 					int start = issue.getOffset() == null ? 0 : Math.min(issue.getOffset(), textLength);
 					int length = issue.getLength() == null ? 0 : issue.getLength();
-					marker.setAttribute(IMarker.CHAR_START, start);
-					marker.setAttribute(IMarker.CHAR_END, Math.min(textLength, start + Math.max(1, length)));
-					marker.setAttribute(IMarker.LOCATION, "line " + issue.getLineNumber() + ", column " + issue.getColumn());
+					// all attributes at once: a reader never sees a marker half made
+					file.createMarker(MARKER, Map.of(IMarker.MESSAGE, issue.getMessage(), IMarker.SEVERITY, severity(issue.getSeverity()),
+							IMarker.LINE_NUMBER, issue.getLineNumber() == null ? 1 : issue.getLineNumber(), IMarker.CHAR_START, start,
+							IMarker.CHAR_END, Math.min(textLength, start + Math.max(1, length)), IMarker.LOCATION,
+							"line " + issue.getLineNumber() + ", column " + issue.getColumn()));
 				}
 			}, file, IWorkspace.AVOID_UPDATE, null);
 		} catch (CoreException e) {

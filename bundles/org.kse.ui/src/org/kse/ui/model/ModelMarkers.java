@@ -2,6 +2,8 @@ package org.kse.ui.model;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.List;
 
 import org.eclipse.core.resources.IFile;
@@ -41,9 +43,10 @@ public final class ModelMarkers {
 			for (Diagnostic diagnostic : diagnostics.getChildren()) {
 				boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
 				counts[error ? 0 : 1]++;
-				IMarker marker = file.createMarker(MARKER);
-				marker.setAttribute(IMarker.MESSAGE, diagnostic.getMessage());
-				marker.setAttribute(IMarker.SEVERITY, error ? IMarker.SEVERITY_ERROR : IMarker.SEVERITY_WARNING);
+				// all attributes at once: a reader never sees a marker half made
+				Map<String, Object> attributes = new HashMap<>();
+				attributes.put(IMarker.MESSAGE, diagnostic.getMessage());
+				attributes.put(IMarker.SEVERITY, error ? IMarker.SEVERITY_ERROR : IMarker.SEVERITY_WARNING);
 				EObject element = null;
 				for (Object data : diagnostic.getData()) {
 					if (data instanceof EObject object) {
@@ -52,10 +55,10 @@ public final class ModelMarkers {
 					}
 				}
 				if (element != null) {
-					marker.setAttribute(ELEMENT, EcoreUtil.getURI(element).fragment());
-					String label = org.kse.validation.Labels.describe(element);
-					marker.setAttribute(IMarker.LOCATION, label);
+					attributes.put(ELEMENT, EcoreUtil.getURI(element).fragment());
+					attributes.put(IMarker.LOCATION, org.kse.validation.Labels.describe(element));
 				}
+				file.createMarker(MARKER, attributes);
 			}
 		}, file, IWorkspace.AVOID_UPDATE, null);
 		return counts;
@@ -64,8 +67,6 @@ public final class ModelMarkers {
 	/** A marker on the file itself, for a model that cannot be read. */
 	public static void unreadable(IFile file, String message) throws CoreException {
 		file.deleteMarkers(MARKER, false, 0);
-		IMarker marker = file.createMarker(MARKER);
-		marker.setAttribute(IMarker.MESSAGE, message);
-		marker.setAttribute(IMarker.SEVERITY, IMarker.SEVERITY_ERROR);
+		file.createMarker(MARKER, Map.of(IMarker.MESSAGE, message, IMarker.SEVERITY, IMarker.SEVERITY_ERROR));
 	}
 }

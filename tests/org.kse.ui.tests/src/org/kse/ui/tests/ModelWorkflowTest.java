@@ -135,29 +135,31 @@ class ModelWorkflowTest {
 
 		Path file = Path.of(goalie.getLocationURI());
 		String text = Files.readString(file);
-		String broken = text.replaceFirst("ballfound\\(\\)>0", "ballfound()>");
-		assertTrue(!broken.equals(text), "a guard to break");
-		Files.writeString(file, broken);
-		goalie.refreshLocal(IResource.DEPTH_ZERO, null);
-		run("org.kse.ui.validate");
-		assertTrue(Ui.waitUntil(() -> {
-			try {
-				return !problems(goalie, IMarker.SEVERITY_ERROR).isEmpty();
-			} catch (CoreException e) {
-				return false;
-			}
-		}, 20_000), "the broken guard is marked");
-		List<IMarker> errors = problems(goalie, IMarker.SEVERITY_ERROR);
-		List<String> messages = errors.stream().map(marker -> marker.getAttribute(IMarker.MESSAGE, "")).toList();
-		IMarker marker = errors.stream().filter(error -> error.getAttribute(IMarker.MESSAGE, "").contains("_TO_")).findFirst()
-				.orElseThrow(() -> new AssertionError("no error names the transition: " + messages));
-		assertNotNull(marker.getAttribute(ModelMarkers.ELEMENT, null), () -> "points at the model element: " + messages);
-		page().showView(IPageLayout.ID_PROBLEM_VIEW);
-		Ui.settle(1500);
-		Ui.screenshot("12-validation-problem");
-
-		Files.writeString(file, text);
-		goalie.refreshLocal(IResource.DEPTH_ZERO, null);
+		try {
+			String broken = text.replaceFirst("ballfound\\(\\)>0", "ballfound()>");
+			assertTrue(!broken.equals(text), "a guard to break");
+			Files.writeString(file, broken);
+			goalie.refreshLocal(IResource.DEPTH_ZERO, null);
+			run("org.kse.ui.validate");
+			assertTrue(Ui.waitUntil(() -> {
+				try {
+					return !problems(goalie, IMarker.SEVERITY_ERROR).isEmpty();
+				} catch (CoreException e) {
+					return false;
+				}
+			}, 20_000), "the broken guard is marked");
+			List<IMarker> errors = problems(goalie, IMarker.SEVERITY_ERROR);
+			List<String> messages = errors.stream().map(marker -> marker.getAttribute(IMarker.MESSAGE, "")).toList();
+			IMarker marker = errors.stream().filter(error -> error.getAttribute(IMarker.MESSAGE, "").contains("_TO_")).findFirst()
+					.orElseThrow(() -> new AssertionError("no error names the transition: " + messages));
+			assertNotNull(marker.getAttribute(ModelMarkers.ELEMENT, null), () -> "points at the model element: " + messages);
+			page().showView(IPageLayout.ID_PROBLEM_VIEW);
+			Ui.settle(1500);
+			Ui.screenshot("12-validation-problem");
+		} finally {
+			Files.writeString(file, text);
+			goalie.refreshLocal(IResource.DEPTH_ZERO, null);
+		}
 		select(goalie);
 		run("org.kse.ui.validate");
 		assertTrue(Ui.waitUntil(() -> {
@@ -334,6 +336,58 @@ class ModelWorkflowTest {
 		assertTrue(!editor.isDirty());
 		String saved = Files.readString(Path.of(defender.getLocationURI()));
 		assertTrue(saved.contains("name=\"Initialise\" label=\"0.2\" type=\"BASIC\""), "saved with the new name and the old kind");
+		page().closeAllEditors(false);
+	}
+
+	@Test
+	@Order(9)
+	void aGuardIsEditedWithCompletionFromTheMessageCatalogAndCheckedWhileTyped() throws Exception {
+		IFile goalie = project.getFile("models/Goalie.stct");
+		var editor = (org.kse.ui.model.editor.StatechartEditor) org.eclipse.ui.ide.IDE.openEditor(page(), goalie);
+		org.kse.model.statechart.Transition transition = editor.getModel().getTransitions().stream()
+				.filter(t -> "0.2.2.2_TO_playing".equals(t.getName())).findFirst().orElseThrow();
+		editor.getViewer().setSelection(new StructuredSelection(transition), true);
+		var dialog = new org.kse.ui.model.editor.ExpressionDialog(editor.getSite().getShell(), transition.getName(), transition.getTE(),
+				editor.catalog());
+		dialog.setBlockOnOpen(false);
+		dialog.open();
+		try {
+			var viewer = dialog.getViewer();
+			var document = viewer.getDocument();
+			document.set("[worldstate.State.GameStateMessage.player_s");
+			viewer.getTextWidget().setFocus();
+			viewer.setSelectedRange(document.getLength(), 0);
+			var offered = new org.kse.ui.model.editor.ExpressionAssist(editor.catalog()).computeCompletionProposals(viewer, document.getLength());
+			assertEquals(1, offered.length, "one field of GameStateMessage starts with 'player_s'");
+			offered[0].apply(document);
+			assertEquals("[worldstate.State.GameStateMessage.player_state()", document.get(), "the field is completed");
+			assertTrue(dialog.getErrorMessage() != null, "unfinished, it is an error");
+			Ui.screenshotOf(dialog.getShell(), "18-guard-completed");
+
+			var proposals = new org.kse.ui.model.editor.ExpressionAssist(editor.catalog()).proposals("[worldstate.State.");
+			assertTrue(proposals.stream().anyMatch(p -> p[0].equals("GameStateMessage")), "message types after topic.Kind.");
+			assertTrue(new org.kse.ui.model.editor.ExpressionAssist(editor.catalog()).proposals("[behavior.").stream()
+					.anyMatch(p -> p[0].equals("State")), "kinds after a topic");
+
+			document.set("[worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING && behavior.State.HeadToBMessage.ballfound()>0]");
+			assertEquals(null, dialog.getErrorMessage(), "a correct guard has no error");
+			document.set("[worldstate.State.GameStateMessage.no_such_field()==1]");
+			assertTrue(dialog.getErrorMessage() != null && dialog.getErrorMessage().startsWith("1:"), () -> "located: " + dialog.getErrorMessage());
+			assertTrue(dialog.getErrorMessage().contains("no_such_field"), dialog.getErrorMessage());
+			Ui.screenshotOf(dialog.getShell(), "19-guard-error-while-typing");
+			document.set("[worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING && behavior.State.HeadToBMessage.ballfound()>0]");
+			press(button(dialog.getShell(), "OK"));
+		} finally {
+			if (dialog.getShell() != null && !dialog.getShell().isDisposed()) {
+				dialog.close();
+			}
+		}
+		String before = transition.getTE();
+		editor.propertySource(transition).setPropertyValue("TE", dialog.getValue());
+		assertEquals(dialog.getValue(), transition.getTE());
+		assertTrue(editor.isDirty());
+		editor.getEditorSite().getActionBars().getGlobalActionHandler(org.eclipse.ui.actions.ActionFactory.UNDO.getId()).run();
+		assertEquals(before, transition.getTE(), "the edit is undoable");
 		page().closeAllEditors(false);
 	}
 

@@ -32,9 +32,11 @@ class ItemPropertySource implements IPropertySource {
 	private final EObject object;
 	private final IItemPropertySource source;
 	private final EditingDomain domain;
+	private final org.kse.messages.MessageCatalog catalog;
 
-	ItemPropertySource(EObject object, AdapterFactory factory, EditingDomain domain) {
+	ItemPropertySource(EObject object, AdapterFactory factory, EditingDomain domain, org.kse.messages.MessageCatalog catalog) {
 		this.object = object;
+		this.catalog = catalog;
 		this.source = (IItemPropertySource) factory.adapt(object, IItemPropertySource.class);
 		this.domain = domain;
 	}
@@ -57,6 +59,20 @@ class ItemPropertySource implements IPropertySource {
 			PropertyDescriptor descriptor;
 			if (feature == StatechartPackage.Literals.NODE__TYPE) {
 				descriptor = new ComboBoxPropertyDescriptor(id, name, KINDS);
+			} else if (feature == StatechartPackage.Literals.TRANSITION__TE) {
+				descriptor = new PropertyDescriptor(id, name) {
+					@Override
+					public org.eclipse.jface.viewers.CellEditor createPropertyEditor(org.eclipse.swt.widgets.Composite parent) {
+						return new org.eclipse.jface.viewers.DialogCellEditor(parent) {
+							@Override
+							protected Object openDialogBox(org.eclipse.swt.widgets.Control window) {
+								ExpressionDialog dialog = new ExpressionDialog(window.getShell(),
+										org.kse.validation.Labels.describe(object), (String) getValue(), catalog);
+								return dialog.open() == org.eclipse.jface.window.Window.OK ? dialog.getValue() : null;
+							}
+						};
+					}
+				};
 			} else if (item.canSetProperty(object) && feature instanceof EAttribute) {
 				descriptor = new TextPropertyDescriptor(id, name);
 			} else {

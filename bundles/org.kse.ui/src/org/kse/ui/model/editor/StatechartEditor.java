@@ -209,7 +209,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	public <T> T getAdapter(Class<T> adapter) {
 		if (adapter == IPropertySheetPage.class) {
 			PropertySheetPage page = new PropertySheetPage();
-			page.setPropertySourceProvider(object -> object instanceof EObject element ? new ItemPropertySource(element, adapterFactory, domain) : null);
+			page.setPropertySourceProvider(object -> object instanceof EObject element ? new ItemPropertySource(element, adapterFactory, domain, catalog()) : null);
 			sheets.add(page);
 			return adapter.cast(page);
 		}
@@ -219,9 +219,19 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		return super.getAdapter(adapter);
 	}
 
+	/** The message catalog of this model: the standard messages and those of its source folder. */
+	public org.kse.messages.MessageCatalog catalog() {
+		List<Path> folders = new ArrayList<>();
+		var sourceFolder = org.kse.ui.model.ModelFiles.sourceFolder(getFile());
+		if (sourceFolder != null) {
+			folders.add(org.kse.ui.model.ModelFiles.location(sourceFolder).resolve("messages"));
+		}
+		return org.kse.messages.StandardMessages.catalog(folders);
+	}
+
 	/** The Properties view's source of an element of this editor's model; its edits go on the command stack. */
 	public org.eclipse.ui.views.properties.IPropertySource propertySource(EObject element) {
-		return new ItemPropertySource(element, adapterFactory, domain);
+		return new ItemPropertySource(element, adapterFactory, domain, catalog());
 	}
 
 	@Override
