@@ -156,6 +156,14 @@ class ModelWorkflowTest {
 			page().showView(IPageLayout.ID_PROBLEM_VIEW);
 			Ui.settle(1500);
 			Ui.screenshot("12-validation-problem");
+			// opening the problem (a double-click in the Problems view) selects the transition in the statechart editor
+			var opened = org.eclipse.ui.ide.IDE.openEditor(page(), marker);
+			var selected = ((org.eclipse.jface.viewers.IStructuredSelection) ((org.kse.ui.model.editor.StatechartEditor) opened).getViewer()
+					.getSelection()).getFirstElement();
+			assertTrue(selected instanceof org.kse.model.statechart.Transition transition
+					&& marker.getAttribute(IMarker.MESSAGE, "").contains(transition.getName()), () -> "selected: " + selected);
+			Ui.screenshot("12b-problem-opened");
+			page().closeAllEditors(false);
 		} finally {
 			Files.writeString(file, text);
 			goalie.refreshLocal(IResource.DEPTH_ZERO, null);

@@ -166,6 +166,15 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		getSite().setSelectionProvider(viewer);
 	}
 
+	/** Opening a validation problem selects the element it is about. */
+	private void reveal(org.eclipse.core.resources.IMarker marker) {
+		String fragment = marker.getAttribute(org.kse.ui.model.ModelMarkers.ELEMENT, null);
+		EObject element = fragment == null || model.eResource() == null ? null : model.eResource().getEObject(fragment);
+		if (element != null && viewer != null) {
+			viewer.setSelection(new StructuredSelection(element), true);
+		}
+	}
+
 	/** How an element reads in the tree. */
 	public static String label(Object element) {
 		if (element instanceof Node node) {
@@ -215,6 +224,9 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		}
 		if (adapter == EditingDomain.class) {
 			return adapter.cast(domain);
+		}
+		if (adapter == org.eclipse.ui.ide.IGotoMarker.class) {
+			return adapter.cast((org.eclipse.ui.ide.IGotoMarker) this::reveal);
 		}
 		return super.getAdapter(adapter);
 	}
