@@ -229,7 +229,8 @@ std::vector<RefereeEvent> Referee::Follow(const gc::GameControlData& packet, con
 	secs_remaining_ = packet.secsRemaining;
 	secondary_time_ = packet.secondaryTime;
 	set_play_ = packet.setPlay <= 5 ? static_cast<SetPlay>(packet.setPlay) : SetPlay::None;
-	kicking_team_ = packet.kickingTeam == team_numbers[1] ? 1 : 0;
+	// 255 (or another team's number) means that neither of our teams kicks off
+	kicking_team_ = packet.kickingTeam == team_numbers[0] ? 0 : packet.kickingTeam == team_numbers[1] ? 1 : -1;
 	for (std::size_t t = 0; t < 2; ++t) {
 		if (teams[t]) score_[t] = teams[t]->score;
 	}

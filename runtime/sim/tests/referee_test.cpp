@@ -210,6 +210,10 @@ TEST(Referee, FollowsARealGameController) {
 	EXPECT_TRUE(game.world.bodies[3].on_field);
 	EXPECT_EQ(game.referee.State(), GameState::Finished);
 
+	packet.kickingTeam = 255;  // no team kicks off
+	game.referee.Follow(packet, {7, 8}, game.world, game.ready);
+	EXPECT_EQ(game.referee.KickingTeam(), -1);
+
 	gc::GameControlData other;
 	other.teams[0].teamNumber = 1;
 	other.teams[1].teamNumber = 2;

@@ -75,6 +75,7 @@ public:
 	GameState State() const { return state_; }
 	bool FirstHalf() const { return half_ == 1; }
 	int Half() const { return half_; }
+	/** 0 home, 1 away, -1 neither (a GameController may announce no kicking team). */
 	int KickingTeam() const { return kicking_team_; }
 	const std::array<int, 2>& Score() const { return score_; }
 	double SecsRemaining() const { return secs_remaining_; }
