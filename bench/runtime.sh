@@ -6,10 +6,8 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 out="$here/target/bench"
 mkdir -p "$out"
-cmake -S "$here/runtime" -B "$out/runtime" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
-  -DCMAKE_INSTALL_PREFIX="$out/prefix" > "$out/runtime.configure.log"
-cmake --build "$out/runtime" -j 2 > "$out/runtime.build.log"
-cmake --install "$out/runtime" > "$out/runtime.install.log"
+# shellcheck source=runtime-prefix.sh
+. "$here/bench/runtime-prefix.sh"
 echo "== flat chain against a hand-written switch"
 "$out/runtime/bench/kse_engine_bench" --benchmark_min_time=0.5 --benchmark_color=false
 echo "== the legacy Goalie"

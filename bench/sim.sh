@@ -7,10 +7,8 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 out="$here/target/bench"
 mkdir -p "$out"
-cmake -S "$here/runtime" -B "$out/runtime" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
-  -DCMAKE_INSTALL_PREFIX="$out/prefix" > "$out/runtime.configure.log"
-cmake --build "$out/runtime" -j 2 > "$out/runtime.build.log"
-cmake --install "$out/runtime" > "$out/runtime.install.log"
+# shellcheck source=runtime-prefix.sh
+. "$here/bench/runtime-prefix.sh"
 "$here/examples/generate.sh"
 cmake -S "$here/examples" -B "$out/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
   -DCMAKE_PREFIX_PATH="$out/prefix" > "$out/examples.configure.log"

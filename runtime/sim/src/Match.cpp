@@ -247,20 +247,12 @@ void Match::Step() {
 	}
 	world_.Step(kTick);
 	for (const auto& event : world_.Events()) {
-		switch (event.type) {
-			case PhysicsEvent::Type::Kick:
-				Emit({0, "kick", world_.bodies[static_cast<std::size_t>(event.body)].team, event.body, event.what});
-				break;
-			case PhysicsEvent::Type::MissedKick:
-				Emit({0, "missed-kick", world_.bodies[static_cast<std::size_t>(event.body)].team, event.body, event.what});
-				break;
-			case PhysicsEvent::Type::Fall:
-				Emit({0, "fall", world_.bodies[static_cast<std::size_t>(event.body)].team, event.body, event.what});
-				break;
-			case PhysicsEvent::Type::Touch:
-			case PhysicsEvent::Type::Post:
-				break;
-		}
+		// touches and post hits are too many for the log; the referee reads them from the world
+		const char* type = event.type == PhysicsEvent::Type::Kick         ? "kick"
+		                   : event.type == PhysicsEvent::Type::MissedKick ? "missed-kick"
+		                   : event.type == PhysicsEvent::Type::Fall       ? "fall"
+		                                                                  : nullptr;
+		if (type) Emit({0, type, world_.bodies[static_cast<std::size_t>(event.body)].team, event.body, event.what});
 	}
 	Apply(referee_.Step(kTick, world_, ReadyPoses()));
 	for (std::size_t i = 0; i < players_.size(); ++i) WatchForStuck(i);

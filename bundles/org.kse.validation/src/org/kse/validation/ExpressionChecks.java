@@ -15,8 +15,16 @@ import org.kse.messages.MessageCatalog;
  */
 public final class ExpressionChecks {
 
-	/** What is wrong, where: line and column from 1, offset from 0 in the expression. */
-	public record Problem(boolean error, int line, int column, int offset, String message) {
+	/** Whether the grammar or the message catalog found it. */
+	public enum Kind {
+		SYNTAX, CATALOG
+	}
+
+	/**
+	 * What is wrong, where: line and column from 1, offset from 0 in the expression; a SYNTAX
+	 * problem carries the parser's issue.
+	 */
+	public record Problem(Kind kind, boolean error, int line, int column, int offset, String message, Issue issue) {
 		@Override
 		public String toString() {
 			return line + ":" + column + ": " + message;
@@ -27,6 +35,11 @@ public final class ExpressionChecks {
 	}
 
 	public static List<Problem> check(String expression, MessageCatalog catalog) {
+		return check(expression, new MessageChecks(catalog, MessageCatalog.standardTopics()));
+	}
+
+	/** With the message checks the statechart validator keeps for a whole model. */
+	static List<Problem> check(String expression, MessageChecks messages) {
 		String text = expression == null ? "" : expression;
 		List<Problem> problems = new ArrayList<>();
 		ExpressionParser.Result parsed = ExpressionParser.parse(text);
@@ -34,12 +47,14 @@ public final class ExpressionChecks {
 			if (issue.getSeverity() == Severity.ERROR || issue.getSeverity() == Severity.WARNING) {
 				int line = issue.getLineNumber() == null ? 1 : issue.getLineNumber();
 				int column = issue.getColumn() == null ? 1 : issue.getColumn();
-				problems.add(new Problem(issue.getSeverity() == Severity.ERROR, line, column, offset(text, line, column), issue.getMessage()));
+				problems.add(new Problem(Kind.SYNTAX, issue.getSeverity() == Severity.ERROR, line, column, offset(text, line, column), issue.getMessage(),
+						issue));
 			}
 		}
 		if (parsed.expression() != null && !parsed.hasErrors()) {
-			for (MessageChecks.Problem problem : new MessageChecks(catalog, MessageCatalog.standardTopics()).check(parsed.expression(), text)) {
-				problems.add(new Problem(true, problem.line(), problem.column(), offset(text, problem.line(), problem.column()), problem.message()));
+			for (MessageChecks.Problem problem : messages.check(parsed.expression(), text)) {
+				problems.add(new Problem(Kind.CATALOG, true, problem.line(), problem.column(), offset(text, problem.line(), problem.column()),
+						problem.message(), null));
 			}
 		}
 		return problems;

@@ -12,9 +12,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EDataType;
 import org.eclipse.emf.ecore.EValidator;
-import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
-import org.kse.expression.ExpressionParser;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.StandardMessages;
 import org.kse.model.NodeKind;
@@ -150,17 +148,13 @@ public class StatechartValidator implements EValidator {
 				warning(diagnostics, SAME_PARENT, transition, "source and target should be in the same composite state");
 			}
 		}
-		ExpressionParser.Result expression = ExpressionParser.parse(transition.getTE());
-		for (Issue issue : expression.issues()) {
-			if (issue.getSeverity() == Severity.ERROR || issue.getSeverity() == Severity.WARNING) {
-				String message = "expression " + issue.getLineNumber() + ":" + issue.getColumn() + ": " + issue.getMessage();
-				diagnostics.add(new BasicDiagnostic(issue.getSeverity() == Severity.ERROR ? Diagnostic.ERROR : Diagnostic.WARNING,
-						DIAGNOSTIC_SOURCE, EXPRESSION, Labels.describe(transition) + ": " + message, new Object[] { transition, issue }));
-			}
-		}
-		if (expression.expression() != null && !expression.hasErrors()) {
-			for (MessageChecks.Problem problem : messageChecks(context).check(expression.expression(), transition.getTE())) {
-				error(diagnostics, MESSAGE, transition, "expression " + problem.line() + ":" + problem.column() + ": " + problem.message());
+		for (ExpressionChecks.Problem problem : ExpressionChecks.check(transition.getTE(), messageChecks(context))) {
+			String message = "expression " + problem.line() + ":" + problem.column() + ": " + problem.message();
+			if (problem.kind() == ExpressionChecks.Kind.SYNTAX) {
+				diagnostics.add(new BasicDiagnostic(problem.error() ? Diagnostic.ERROR : Diagnostic.WARNING, DIAGNOSTIC_SOURCE, EXPRESSION,
+						Labels.describe(transition) + ": " + message, new Object[] { transition, problem.issue() }));
+			} else {
+				error(diagnostics, MESSAGE, transition, message);
 			}
 		}
 	}

@@ -23,19 +23,33 @@ public final class Definitions {
 	public static List<Definition> of(String text) {
 		List<Definition> definitions = new ArrayList<>();
 		Matcher matcher = FORMULA.matcher(text);
+		int line = 1;
+		int counted = 0;
 		while (matcher.find()) {
 			String expression = matcher.group(2);
 			int comment = expression.indexOf("//");
 			expression = (comment >= 0 ? expression.substring(0, comment) : expression).trim();
-			int line = 1;
-			for (int i = 0; i < matcher.start(1); i++) {
-				if (text.charAt(i) == '\n') {
+			for (; counted < matcher.start(1); counted++) {
+				if (text.charAt(counted) == '\n') {
 					line++;
 				}
 			}
 			definitions.add(new Definition(matcher.group(1), matcher.start(1), line, expression));
 		}
 		return definitions;
+	}
+
+	/** The name around {@code offset} (start and end offsets), or null when there is none. */
+	public static int[] wordAt(String text, int offset) {
+		int start = offset;
+		while (start > 0 && FormulaScanner.isNamePart(text.charAt(start - 1))) {
+			start--;
+		}
+		int end = offset;
+		while (end < text.length() && FormulaScanner.isNamePart(text.charAt(end))) {
+			end++;
+		}
+		return start == end ? null : new int[] { start, end };
 	}
 
 	/** The definition of {@code name}, or null. */

@@ -14,11 +14,7 @@ import java.util.concurrent.Executors;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.jface.text.ITextViewer;
-import org.eclipse.jface.text.contentassist.CompletionProposal;
 import org.eclipse.jface.text.contentassist.ICompletionProposal;
-import org.eclipse.jface.text.contentassist.IContentAssistProcessor;
-import org.eclipse.jface.text.contentassist.IContextInformation;
-import org.eclipse.jface.text.contentassist.IContextInformationValidator;
 import org.eclipse.xtext.ide.editor.contentassist.ContentAssistContext;
 import org.eclipse.xtext.ide.editor.contentassist.ContentAssistEntry;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalAcceptor;
@@ -32,6 +28,7 @@ import org.kse.liveness.ide.LivenessIdeSetup;
 import org.kse.liveness.liveness.Formula;
 import org.kse.liveness.liveness.FormulaFile;
 import org.kse.liveness.liveness.Reference;
+import org.kse.ui.CompletionProcessor;
 
 import com.google.inject.Injector;
 
@@ -39,7 +36,7 @@ import com.google.inject.Injector;
  * Completion in formulas: the grammar's operators and brackets where they may go (Xtext's IDE
  * services), and the names of the file, capabilities and activities, for the name being typed.
  */
-public class FormulaContentAssist implements IContentAssistProcessor {
+public class FormulaContentAssist extends CompletionProcessor {
 
 	private static final class Holder {
 		static final Injector INJECTOR = create();
@@ -63,24 +60,20 @@ public class FormulaContentAssist implements IContentAssistProcessor {
 		List<ICompletionProposal> proposals = new ArrayList<>();
 		for (String name : names(text)) {
 			if (name.startsWith(prefix) && !name.equals(prefix)) {
-				proposals.add(new CompletionProposal(name, offset - prefix.length(), prefix.length(), name.length(), null,
-						name + (Character.isUpperCase(name.charAt(0)) ? "  (activity)" : "  (capability)"), null, null));
+				proposals.add(proposal(name, prefix, offset, Character.isUpperCase(name.charAt(0)) ? "activity" : "capability"));
 			}
 		}
 		if (prefix.isEmpty()) {
 			for (String keyword : grammarProposals(text.substring(0, offset), offset)) {
-				proposals.add(new CompletionProposal(keyword, offset, 0, keyword.length(), null, keyword + "  (operator)", null, null));
+				proposals.add(proposal(keyword, "", offset, "operator"));
 			}
 		}
 		return proposals.toArray(ICompletionProposal[]::new);
 	}
 
 	static String namePrefix(String text, int offset) {
-		int start = offset;
-		while (start > 0 && FormulaScanner.isNamePart(text.charAt(start - 1))) {
-			start--;
-		}
-		return text.substring(start, offset);
+		int[] name = Definitions.wordAt(text.substring(0, offset), offset);
+		return name == null ? "" : text.substring(name[0], offset);
 	}
 
 	/** Every name the formulas define or use, sorted. */
@@ -129,28 +122,12 @@ public class FormulaContentAssist implements IContentAssistProcessor {
 		return keywords;
 	}
 
-	@Override
-	public IContextInformation[] computeContextInformation(ITextViewer viewer, int offset) {
-		return null;
-	}
 
 	@Override
 	public char[] getCompletionProposalAutoActivationCharacters() {
 		return new char[] { '=', '.', '(', '[' };
 	}
 
-	@Override
-	public char[] getContextInformationAutoActivationCharacters() {
-		return null;
-	}
 
-	@Override
-	public String getErrorMessage() {
-		return null;
-	}
 
-	@Override
-	public IContextInformationValidator getContextInformationValidator() {
-		return null;
-	}
 }

@@ -51,13 +51,8 @@ public class FormulaEditor extends TextEditor {
 	public boolean openDefinitionAtCursor() {
 		String text = getText();
 		int offset = ((org.eclipse.jface.text.ITextSelection) getSelectionProvider().getSelection()).getOffset();
-		String name = FormulaContentAssist.namePrefix(text, offset);
-		int end = offset;
-		while (end < text.length() && FormulaScanner.isNamePart(text.charAt(end))) {
-			end++;
-		}
-		name = name + text.substring(offset, end);
-		Definitions.Definition definition = name.isEmpty() ? null : Definitions.find(text, name);
+		int[] name = Definitions.wordAt(text, offset);
+		Definitions.Definition definition = name == null ? null : Definitions.find(text, text.substring(name[0], name[1]));
 		if (definition == null) {
 			return false;
 		}

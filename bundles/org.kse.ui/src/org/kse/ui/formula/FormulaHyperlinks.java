@@ -18,18 +18,12 @@ class FormulaHyperlinks extends AbstractHyperlinkDetector {
 	@Override
 	public IHyperlink[] detectHyperlinks(ITextViewer viewer, IRegion region, boolean canShowMultipleHyperlinks) {
 		String text = viewer.getDocument().get();
-		int offset = region.getOffset();
-		int start = offset;
-		while (start > 0 && FormulaScanner.isNamePart(text.charAt(start - 1))) {
-			start--;
-		}
-		int end = offset;
-		while (end < text.length() && FormulaScanner.isNamePart(text.charAt(end))) {
-			end++;
-		}
-		if (start == end) {
+		int[] name = Definitions.wordAt(text, region.getOffset());
+		if (name == null) {
 			return null;
 		}
+		int start = name[0];
+		int end = name[1];
 		Definitions.Definition definition = Definitions.find(text, text.substring(start, end));
 		if (definition == null || definition.offset() == start) {
 			return null;

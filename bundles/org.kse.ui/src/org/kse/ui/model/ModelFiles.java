@@ -78,6 +78,16 @@ public final class ModelFiles {
 		model.setPersistentProperty(LOGGER, Boolean.toString(logger));
 	}
 
+	/** The messages a model's expressions may use: the standard ones and those of its source folder's messages/. */
+	public static org.kse.messages.MessageCatalog catalog(IFile model) {
+		List<Path> folders = new ArrayList<>();
+		IContainer sourceFolder = sourceFolder(model);
+		if (sourceFolder != null) {
+			folders.add(location(sourceFolder).resolve("messages"));
+		}
+		return org.kse.messages.StandardMessages.catalog(folders);
+	}
+
 	public static boolean logger(IFile model) {
 		try {
 			return Boolean.parseBoolean(model.getPersistentProperty(LOGGER));

@@ -1,10 +1,7 @@
 package org.kse.ui.model;
 
-import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.Map;
-import java.util.List;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IMarker;
@@ -13,8 +10,6 @@ import org.eclipse.core.runtime.CoreException;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.util.EcoreUtil;
-import org.kse.messages.MessageCatalog;
-import org.kse.messages.StandardMessages;
 import org.kse.model.statechart.Model;
 import org.kse.validation.ModelValidation;
 
@@ -30,13 +25,7 @@ public final class ModelMarkers {
 
 	/** Replaces the model's markers by its diagnostics; returns {errors, warnings}. */
 	public static int[] validate(IFile file, Model model) throws CoreException {
-		List<Path> messageFolders = new ArrayList<>();
-		var sourceFolder = ModelFiles.sourceFolder(file);
-		if (sourceFolder != null) {
-			messageFolders.add(ModelFiles.location(sourceFolder).resolve("messages"));
-		}
-		MessageCatalog catalog = StandardMessages.catalog(messageFolders);
-		Diagnostic diagnostics = ModelValidation.validate(model, catalog);
+		Diagnostic diagnostics = ModelValidation.validate(model, ModelFiles.catalog(file));
 		int[] counts = new int[2];
 		file.getWorkspace().run(monitor -> {
 			file.deleteMarkers(MARKER, false, 0);

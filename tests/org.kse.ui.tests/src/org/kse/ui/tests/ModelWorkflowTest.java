@@ -94,6 +94,15 @@ class ModelWorkflowTest {
 		return found;
 	}
 
+	/** The model's error markers now; -1 while they cannot be read. */
+	private static int errors(IFile file) {
+		try {
+			return problems(file, IMarker.SEVERITY_ERROR).size();
+		} catch (CoreException e) {
+			return -1;
+		}
+	}
+
 	@Test
 	@Order(1)
 	void theNewProjectWizardCreatesASourceTreeWithTheExamples() {
@@ -141,13 +150,7 @@ class ModelWorkflowTest {
 			Files.writeString(file, broken);
 			goalie.refreshLocal(IResource.DEPTH_ZERO, null);
 			run("org.kse.ui.validate");
-			assertTrue(Ui.waitUntil(() -> {
-				try {
-					return !problems(goalie, IMarker.SEVERITY_ERROR).isEmpty();
-				} catch (CoreException e) {
-					return false;
-				}
-			}, 20_000), "the broken guard is marked");
+			assertTrue(Ui.waitUntil(() -> errors(goalie) > 0, 20_000), "the broken guard is marked");
 			List<IMarker> errors = problems(goalie, IMarker.SEVERITY_ERROR);
 			List<String> messages = errors.stream().map(marker -> marker.getAttribute(IMarker.MESSAGE, "")).toList();
 			IMarker marker = errors.stream().filter(error -> error.getAttribute(IMarker.MESSAGE, "").contains("_TO_")).findFirst()
@@ -170,13 +173,7 @@ class ModelWorkflowTest {
 		}
 		select(goalie);
 		run("org.kse.ui.validate");
-		assertTrue(Ui.waitUntil(() -> {
-			try {
-				return problems(goalie, IMarker.SEVERITY_ERROR).isEmpty();
-			} catch (CoreException e) {
-				return false;
-			}
-		}, 20_000), "fixed, the marker goes");
+		assertTrue(Ui.waitUntil(() -> errors(goalie) == 0, 20_000), "fixed, the marker goes");
 	}
 
 	@Test

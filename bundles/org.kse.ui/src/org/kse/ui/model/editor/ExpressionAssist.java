@@ -7,21 +7,18 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import org.eclipse.jface.text.ITextViewer;
-import org.eclipse.jface.text.contentassist.CompletionProposal;
 import org.eclipse.jface.text.contentassist.ICompletionProposal;
-import org.eclipse.jface.text.contentassist.IContentAssistProcessor;
-import org.eclipse.jface.text.contentassist.IContextInformation;
-import org.eclipse.jface.text.contentassist.IContextInformationValidator;
 import org.kse.messages.Field;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.MessageType;
+import org.kse.ui.CompletionProcessor;
 
 /**
  * Completion in transition expressions from the message catalog: topics and helper functions,
  * then after {@code topic.} the kinds, after {@code topic.Kind.} the message types, after
  * {@code topic.Kind.Type.} the fields, and the actions after {@code /}.
  */
-public class ExpressionAssist implements IContentAssistProcessor {
+public class ExpressionAssist extends CompletionProcessor {
 
 	static final List<String> KINDS = List.of("State", "Data", "Signal");
 	static final List<String> HELPERS = List.of("readyToKick(", "ballAway(", "robotInPosition(", "TimeoutCheck(");
@@ -43,9 +40,7 @@ public class ExpressionAssist implements IContentAssistProcessor {
 		String before = viewer.getDocument().get().substring(0, offset);
 		List<ICompletionProposal> proposals = new ArrayList<>();
 		for (String[] proposal : proposals(before)) {
-			String prefix = proposal[1];
-			proposals.add(new CompletionProposal(proposal[0], offset - prefix.length(), prefix.length(), proposal[0].length(), null,
-					proposal[0] + "  (" + proposal[2] + ")", null, null));
+			proposals.add(proposal(proposal[0], proposal[1], offset, proposal[2]));
 		}
 		return proposals.toArray(ICompletionProposal[]::new);
 	}
@@ -94,28 +89,12 @@ public class ExpressionAssist implements IContentAssistProcessor {
 		}
 	}
 
-	@Override
-	public IContextInformation[] computeContextInformation(ITextViewer viewer, int offset) {
-		return null;
-	}
 
 	@Override
 	public char[] getCompletionProposalAutoActivationCharacters() {
 		return new char[] { '.', '[', '/' };
 	}
 
-	@Override
-	public char[] getContextInformationAutoActivationCharacters() {
-		return null;
-	}
 
-	@Override
-	public String getErrorMessage() {
-		return null;
-	}
 
-	@Override
-	public IContextInformationValidator getContextInformationValidator() {
-		return null;
-	}
 }

@@ -63,6 +63,8 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	private Action undo;
 	private Action redo;
 	private final List<PropertySheetPage> sheets = new ArrayList<>();
+	private org.kse.messages.MessageCatalog catalog;
+	private String catalogFolder;
 
 	@Override
 	public void init(IEditorSite site, IEditorInput input) throws PartInitException {
@@ -231,14 +233,18 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		return super.getAdapter(adapter);
 	}
 
-	/** The message catalog of this model: the standard messages and those of its source folder. */
+	/**
+	 * The message catalog of this model (ModelFiles.catalog), read once per source folder: the
+	 * Properties view asks for it at every selection, and reading means parsing .proto files.
+	 */
 	public org.kse.messages.MessageCatalog catalog() {
-		List<Path> folders = new ArrayList<>();
 		var sourceFolder = org.kse.ui.model.ModelFiles.sourceFolder(getFile());
-		if (sourceFolder != null) {
-			folders.add(org.kse.ui.model.ModelFiles.location(sourceFolder).resolve("messages"));
+		String key = sourceFolder == null ? "" : sourceFolder.getFullPath().toString();
+		if (catalog == null || !key.equals(catalogFolder)) {
+			catalog = org.kse.ui.model.ModelFiles.catalog(getFile());
+			catalogFolder = key;
 		}
-		return org.kse.messages.StandardMessages.catalog(folders);
+		return catalog;
 	}
 
 	/** The Properties view's source of an element of this editor's model; its edits go on the command stack. */
