@@ -51,12 +51,15 @@ final class Ui {
 
 	/** The workbench window as a PNG under target/screenshots (system property kse.screenshots). */
 	static Path screenshot(String name) {
-		settle(300);
 		return screenshotOf(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell(), name);
 	}
 
 	/** A window (a dialog, the workbench) as a PNG under target/screenshots. */
 	static Path screenshotOf(Shell shell, String name) {
+		// a window just opened is mapped and painted only after the event loop has run a while
+		shell.moveAbove(null);
+		shell.update();
+		settle(500);
 		Display display = display();
 		Rectangle bounds = shell.getBounds();
 		Image image = new Image(display, bounds.width, bounds.height);
