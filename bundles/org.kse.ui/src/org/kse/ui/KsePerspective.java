@@ -14,7 +14,7 @@ public class KsePerspective implements IPerspectiveFactory {
 		String editors = layout.getEditorArea();
 		layout.addView(IPageLayout.ID_PROJECT_EXPLORER, IPageLayout.LEFT, 0.22f, editors);
 		layout.addView(IPageLayout.ID_OUTLINE, IPageLayout.RIGHT, 0.78f, editors);
-		IFolderLayout bottom = layout.createFolder("org.kse.ui.bottom", IPageLayout.BOTTOM, 0.72f, editors);
+		IFolderLayout bottom = layout.createFolder("org.kse.ui.bottom", IPageLayout.BOTTOM, 0.6f, editors);
 		bottom.addView(IPageLayout.ID_PROBLEM_VIEW);
 		bottom.addView(IPageLayout.ID_PROP_SHEET);
 		bottom.addView(IPageLayout.ID_PROGRESS_VIEW);

@@ -43,21 +43,13 @@ public class EditActivityHandler extends AbstractHandler {
 			MessageDialog.openInformation(shell, "Edit Activity", model.getName() + " is not connected to a source folder yet: generate its code first.");
 			return null;
 		}
-		List<String> activities;
-		try {
-			activities = new ArrayList<>(GenerationPlan.of(StatechartResources.load(ModelFiles.location(model))).activities().keySet());
-		} catch (IOException e) {
-			throw new ExecutionException("cannot read " + model.getFullPath() + ": " + e.getMessage(), e);
+		String activity = selectedActivity(event);
+		if (activity == null) {
+			activity = chooseActivity(shell, model);
+			if (activity == null) {
+				return null;
+			}
 		}
-		ElementListSelectionDialog dialog = new ElementListSelectionDialog(shell, new LabelProvider());
-		dialog.setTitle("Edit Activity");
-		dialog.setMessage("The activity of " + model.getName() + " to edit:");
-		dialog.setElements(activities.toArray());
-		dialog.setMultipleSelection(false);
-		if (dialog.open() != Window.OK || dialog.getFirstResult() == null) {
-			return null;
-		}
-		String activity = (String) dialog.getFirstResult();
 		IFile source = folder.getFile(org.eclipse.core.runtime.Path.fromPortableString("activities/" + activity + "/" + activity + ".cpp"));
 		if (!source.exists()) {
 			MessageDialog.openInformation(shell, "Edit Activity", source.getFullPath() + " does not exist yet: generate the code of " + model.getName() + " first.");
@@ -84,5 +76,31 @@ public class EditActivityHandler extends AbstractHandler {
 		} catch (PartInitException e) {
 			throw new ExecutionException("cannot open " + source.getFullPath() + ": " + e.getMessage(), e);
 		}
+	}
+
+	/** The activity of the BASIC state selected in the statechart editor, as the original tool's Edit Activity took it. */
+	private static String selectedActivity(ExecutionEvent event) {
+		if (HandlerUtil.getCurrentSelection(event) instanceof org.eclipse.jface.viewers.IStructuredSelection selection
+				&& selection.getFirstElement() instanceof org.kse.model.statechart.Node node && org.kse.model.NodeKind.BASIC.is(node)
+				&& node.eResource() != null) {
+			org.kse.model.statechart.Model owner = (org.kse.model.statechart.Model) org.eclipse.emf.ecore.util.EcoreUtil.getRootContainer(node);
+			return GenerationPlan.of(owner).activityName(node);
+		}
+		return null;
+	}
+
+	private static String chooseActivity(Shell shell, IFile model) throws ExecutionException {
+		List<String> activities;
+		try {
+			activities = new ArrayList<>(GenerationPlan.of(StatechartResources.load(ModelFiles.location(model))).activities().keySet());
+		} catch (IOException e) {
+			throw new ExecutionException("cannot read " + model.getFullPath() + ": " + e.getMessage(), e);
+		}
+		ElementListSelectionDialog dialog = new ElementListSelectionDialog(shell, new LabelProvider());
+		dialog.setTitle("Edit Activity");
+		dialog.setMessage("The activity of " + model.getName() + " to edit:");
+		dialog.setElements(activities.toArray());
+		dialog.setMultipleSelection(false);
+		return dialog.open() == Window.OK ? (String) dialog.getFirstResult() : null;
 	}
 }

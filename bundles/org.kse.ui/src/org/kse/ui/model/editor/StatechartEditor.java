@@ -7,9 +7,14 @@ import java.util.List;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IResource;
+import org.eclipse.core.resources.IResourceChangeEvent;
+import org.eclipse.core.resources.IResourceChangeListener;
+import org.eclipse.core.resources.IResourceDelta;
+import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.emf.common.command.BasicCommandStack;
+import org.eclipse.emf.common.command.Command;
 import org.eclipse.emf.common.command.CommandStack;
 import org.eclipse.emf.common.command.CommandStackListener;
 import org.eclipse.emf.ecore.EObject;
@@ -20,7 +25,10 @@ import org.eclipse.emf.edit.provider.ComposedAdapterFactory;
 import org.eclipse.emf.edit.provider.ReflectiveItemProviderAdapterFactory;
 import org.eclipse.emf.edit.provider.resource.ResourceItemProviderAdapterFactory;
 import org.eclipse.jface.action.Action;
+import org.eclipse.jface.action.MenuManager;
+import org.eclipse.jface.action.Separator;
 import org.eclipse.jface.viewers.ColumnLabelProvider;
+import org.eclipse.jface.viewers.IStructuredSelection;
 import org.eclipse.jface.viewers.ITreeContentProvider;
 import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.jface.viewers.TreeViewer;
@@ -29,24 +37,35 @@ import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.ui.IEditorInput;
 import org.eclipse.ui.IEditorSite;
+import org.eclipse.ui.IWorkbenchActionConstants;
+import org.eclipse.ui.IWorkbenchCommandConstants;
 import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.actions.ActionFactory;
 import org.eclipse.ui.part.EditorPart;
 import org.eclipse.ui.views.properties.IPropertySheetPage;
-import org.eclipse.ui.views.properties.PropertySheetPage;
+import org.eclipse.ui.views.properties.tabbed.ITabbedPropertySheetPageContributor;
+import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
+import org.kse.model.NodeKind;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 
 /**
- * The statechart as a tree (states nested as in the file, then the transitions) with its
- * properties in the Properties view. Every edit is a command: undo, redo and the dirty state
- * follow the command stack; Save writes the file atomically.
+ * The statechart as a tree (the model, its states nested as in the file, then the transitions)
+ * with its properties in the tabbed Properties view. States and transitions are added and deleted
+ * from the context menu and moved by dragging. Every edit is a command: undo, redo and the dirty
+ * state follow the command stack; Save writes the file atomically, Revert reloads it, and a file
+ * changed on disk is reloaded when the editor has no unsaved changes.
  */
-public class StatechartEditor extends EditorPart implements IEditingDomainProvider {
+public class StatechartEditor extends EditorPart implements IEditingDomainProvider, ITabbedPropertySheetPageContributor {
 
 	public static final String ID = "org.kse.ui.statechart.editor";
+
+	/** A field of the Properties view that holds an edit until it loses the focus; Save makes it first. */
+	public interface PendingEdit {
+		void commitPending();
+	}
 
 	/** The tree's folder of transitions under the model. */
 	public record Transitions(Model model) {
@@ -62,7 +81,12 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	private final CommandStackListener stackListener = event -> getSite().getShell().getDisplay().asyncExec(this::stackChanged);
 	private Action undo;
 	private Action redo;
-	private final List<PropertySheetPage> sheets = new ArrayList<>();
+	private Action revert;
+	private Action delete;
+	private final List<TabbedPropertySheetPage> sheets = new ArrayList<>();
+	private final IResourceChangeListener fileListener = this::fileChanged;
+	/** Set while this editor writes its file, so that its own save is not taken for a change on disk. */
+	private boolean saving;
 	private org.kse.messages.MessageCatalog catalog;
 	private String catalogFolder;
 
@@ -86,6 +110,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			throw new PartInitException("cannot open " + file.getFullPath() + ": " + e.getMessage(), e);
 		}
 		stack.addCommandStackListener(stackListener);
+		ResourcesPlugin.getWorkspace().addResourceChangeListener(fileListener, IResourceChangeEvent.POST_CHANGE);
 		undo = new Action("Undo") {
 			@Override
 			public void run() {
@@ -98,8 +123,23 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 				domain.getCommandStack().redo();
 			}
 		};
+		revert = new Action("Revert") {
+			@Override
+			public void run() {
+				doRevert();
+			}
+		};
+		delete = new Action("Delete") {
+			@Override
+			public void run() {
+				execute(StructureEdits.delete(domain, model, selection().toList()));
+			}
+		};
+		delete.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_DELETE);
 		site.getActionBars().setGlobalActionHandler(ActionFactory.UNDO.getId(), undo);
 		site.getActionBars().setGlobalActionHandler(ActionFactory.REDO.getId(), redo);
+		site.getActionBars().setGlobalActionHandler(ActionFactory.REVERT.getId(), revert);
+		site.getActionBars().setGlobalActionHandler(ActionFactory.DELETE.getId(), delete);
 		updateUndoRedo();
 	}
 
@@ -126,13 +166,17 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		viewer.setContentProvider(new ITreeContentProvider() {
 			@Override
 			public Object[] getElements(Object input) {
-				List<Object> roots = new ArrayList<>(((Model) input).getNodes());
-				roots.add(new Transitions((Model) input));
-				return roots.toArray();
+				// the input is an array around the model: a viewer cannot show its input as an item
+				return (Object[]) input;
 			}
 
 			@Override
 			public Object[] getChildren(Object element) {
+				if (element instanceof Model root) {
+					List<Object> children = new ArrayList<>(root.getNodes());
+					children.add(new Transitions(root));
+					return children.toArray();
+				}
 				if (element instanceof Node node) {
 					return node.getChildren().toArray();
 				}
@@ -144,6 +188,12 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 
 			@Override
 			public Object getParent(Object element) {
+				if (element instanceof Transitions transitions) {
+					return transitions.model();
+				}
+				if (element instanceof Transition transition && transition.eContainer() instanceof Model root) {
+					return new Transitions(root);
+				}
 				return element instanceof EObject object ? object.eContainer() : null;
 			}
 
@@ -163,9 +213,70 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 				return element instanceof Transition ? TRANSITION : STATE;
 			}
 		});
-		viewer.setInput(model);
-		viewer.expandToLevel(3);
+		viewer.setInput(new Object[] { model });
+		viewer.expandToLevel(4);
 		getSite().setSelectionProvider(viewer);
+		viewer.addSelectionChangedListener(event -> updateActions());
+		createContextMenu();
+		StructureDragAndDrop.install(this);
+		updateActions();
+	}
+
+	private IStructuredSelection selection() {
+		return viewer == null ? StructuredSelection.EMPTY : viewer.getStructuredSelection();
+	}
+
+	private List<Node> selectedStates() {
+		List<Node> states = new ArrayList<>();
+		for (Object each : selection()) {
+			if (each instanceof Node node) {
+				states.add(node);
+			}
+		}
+		return states;
+	}
+
+	private void createContextMenu() {
+		MenuManager menu = new MenuManager("#StatechartEditor");
+		menu.setRemoveAllWhenShown(true);
+		menu.addMenuListener(manager -> {
+			Object first = selection().getFirstElement();
+			MenuManager states = new MenuManager("New State");
+			for (NodeKind kind : NodeKind.values()) {
+				states.add(new Action(kind.name()) {
+					@Override
+					public void run() {
+						execute(StructureEdits.newState(domain, model, first, kind));
+					}
+				});
+			}
+			manager.add(states);
+			Action transition = new Action(selectedStates().size() == 2 ? "New Transition (first to second state)" : "New Transition (self-loop)") {
+				@Override
+				public void run() {
+					execute(StructureEdits.newTransition(domain, model, selectedStates()));
+				}
+			};
+			transition.setEnabled(StructureEdits.newTransition(domain, model, selectedStates()).canExecute());
+			manager.add(transition);
+			manager.add(new Separator());
+			manager.add(delete);
+			manager.add(new Separator(IWorkbenchActionConstants.MB_ADDITIONS));
+		});
+		viewer.getControl().setMenu(menu.createContextMenu(viewer.getControl()));
+		getEditorSite().registerContextMenu(ID, menu, viewer, false);
+	}
+
+	private void updateActions() {
+		delete.setEnabled(viewer != null && StructureEdits.delete(domain, model, selection().toList()).canExecute());
+		revert.setEnabled(isDirty());
+	}
+
+	/** Runs an edit on the command stack (so that it can be undone); one that cannot run is ignored. */
+	public void execute(Command command) {
+		if (command.canExecute()) {
+			domain.getCommandStack().execute(command);
+		}
 	}
 
 	/** Opening a validation problem selects the element it is about. */
@@ -179,6 +290,9 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 
 	/** How an element reads in the tree. */
 	public static String label(Object element) {
+		if (element instanceof Model root) {
+			return "Model " + root.getName() + "  (" + root.getVariables().size() + " variables)";
+		}
 		if (element instanceof Node node) {
 			String activity = node.getActivity() == null || node.getActivity().isBlank() ? "" : "  activity " + node.getActivity();
 			return node.getLabel() + "  " + node.getName() + " : " + node.getType() + activity;
@@ -202,10 +316,29 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 				viewer.setSelection(new StructuredSelection(affected), true);
 			}
 		}
-		sheets.removeIf(sheet -> sheet.getControl() != null && sheet.getControl().isDisposed());
-		sheets.stream().filter(sheet -> sheet.getControl() != null).forEach(PropertySheetPage::refresh);
+		refreshSheets();
 		firePropertyChange(PROP_DIRTY);
 		updateUndoRedo();
+		if (viewer != null && !viewer.getControl().isDisposed()) {
+			updateActions();
+		}
+	}
+
+	private void commitPendingEdits() {
+		for (TabbedPropertySheetPage sheet : sheets) {
+			if (sheet.getControl() != null && !sheet.getControl().isDisposed() && sheet.getCurrentTab() != null) {
+				for (var section : sheet.getCurrentTab().getSections()) {
+					if (section instanceof PendingEdit pending) {
+						pending.commitPending();
+					}
+				}
+			}
+		}
+	}
+
+	private void refreshSheets() {
+		sheets.removeIf(sheet -> sheet.getControl() != null && sheet.getControl().isDisposed());
+		sheets.stream().filter(sheet -> sheet.getControl() != null && sheet.getCurrentTab() != null).forEach(TabbedPropertySheetPage::refresh);
 	}
 
 	private void updateUndoRedo() {
@@ -219,8 +352,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	@Override
 	public <T> T getAdapter(Class<T> adapter) {
 		if (adapter == IPropertySheetPage.class) {
-			PropertySheetPage page = new PropertySheetPage();
-			page.setPropertySourceProvider(object -> object instanceof EObject element ? new ItemPropertySource(element, adapterFactory, domain, catalog()) : null);
+			TabbedPropertySheetPage page = new TabbedPropertySheetPage(this);
 			sheets.add(page);
 			return adapter.cast(page);
 		}
@@ -247,6 +379,11 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		return catalog;
 	}
 
+	@Override
+	public String getContributorId() {
+		return ID;
+	}
+
 	/** The Properties view's source of an element of this editor's model; its edits go on the command stack. */
 	public org.eclipse.ui.views.properties.IPropertySource propertySource(EObject element) {
 		return new ItemPropertySource(element, adapterFactory, domain, catalog());
@@ -260,15 +397,72 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	@Override
 	public void doSave(IProgressMonitor monitor) {
 		IFile file = getFile();
+		commitPendingEdits();
+		saving = true;
 		try {
 			StatechartResources.save(model, Path.of(file.getLocationURI()));
 			((BasicCommandStack) domain.getCommandStack()).saveIsDone();
 			file.refreshLocal(IResource.DEPTH_ZERO, monitor);
 			firePropertyChange(PROP_DIRTY);
+			updateActions();
 		} catch (IOException | CoreException e) {
 			org.eclipse.jface.dialogs.ErrorDialog.openError(getSite().getShell(), "Save", "Cannot save " + file.getFullPath(),
 					org.eclipse.core.runtime.Status.error(e.getMessage(), e));
+		} finally {
+			saving = false;
 		}
+	}
+
+	/** Reloads the saved file: unsaved edits are dropped, and so is the undo history. */
+	public void doRevert() {
+		IFile file = getFile();
+		Model reloaded;
+		try {
+			var resourceSet = domain.getResourceSet();
+			resourceSet.getResources().forEach(org.eclipse.emf.ecore.resource.Resource::unload);
+			resourceSet.getResources().clear();
+			reloaded = StatechartResources.load(resourceSet, Path.of(file.getLocationURI()));
+		} catch (IOException e) {
+			org.eclipse.jface.dialogs.ErrorDialog.openError(getSite().getShell(), "Revert", "Cannot read " + file.getFullPath(),
+					org.eclipse.core.runtime.Status.error(e.getMessage(), e));
+			return;
+		}
+		model = reloaded;
+		domain.getCommandStack().flush();
+		((BasicCommandStack) domain.getCommandStack()).saveIsDone();
+		if (viewer != null && !viewer.getControl().isDisposed()) {
+			viewer.setInput(new Object[] { model });
+			viewer.expandToLevel(4);
+			viewer.setSelection(new StructuredSelection(model));
+		}
+		refreshSheets();
+		firePropertyChange(PROP_DIRTY);
+		updateUndoRedo();
+		updateActions();
+	}
+
+	/** The file changed on disk (say, the formula was transformed again): reload it unless there are unsaved edits. */
+	private void fileChanged(IResourceChangeEvent event) {
+		IFile file = getFile();
+		IResourceDelta delta = event.getDelta() == null || file == null ? null : event.getDelta().findMember(file.getFullPath());
+		if (delta == null || saving) {
+			return;
+		}
+		boolean removed = delta.getKind() == IResourceDelta.REMOVED && (delta.getFlags() & IResourceDelta.MOVED_TO) == 0;
+		boolean changed = delta.getKind() == IResourceDelta.CHANGED && (delta.getFlags() & (IResourceDelta.CONTENT | IResourceDelta.REPLACED)) != 0;
+		if (!removed && !changed) {
+			return;
+		}
+		getSite().getShell().getDisplay().asyncExec(() -> {
+			if (viewer == null || viewer.getControl().isDisposed() || saving) {
+				return;
+			}
+			if (removed) {
+				getSite().getPage().closeEditor(this, false);
+			} else if (!isDirty()) {
+				doRevert();
+			}
+		});
 	}
 
 	@Override
@@ -288,6 +482,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 
 	@Override
 	public void dispose() {
+		ResourcesPlugin.getWorkspace().removeResourceChangeListener(fileListener);
 		domain.getCommandStack().removeCommandStackListener(stackListener);
 		adapterFactory.dispose();
 		super.dispose();

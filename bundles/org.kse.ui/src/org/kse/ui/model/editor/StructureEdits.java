@@ -1,0 +1,164 @@
+package org.kse.ui.model.editor;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+import org.eclipse.emf.common.command.Command;
+import org.eclipse.emf.common.command.CompoundCommand;
+import org.eclipse.emf.common.command.UnexecutableCommand;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EReference;
+import org.eclipse.emf.edit.command.AddCommand;
+import org.eclipse.emf.edit.command.DeleteCommand;
+import org.eclipse.emf.edit.command.RemoveCommand;
+import org.eclipse.emf.edit.domain.EditingDomain;
+import org.kse.model.NodeKind;
+import org.kse.model.statechart.Model;
+import org.kse.model.statechart.Node;
+import org.kse.model.statechart.StatechartFactory;
+import org.kse.model.statechart.StatechartPackage.Literals;
+import org.kse.model.statechart.Transition;
+
+/**
+ * The structure edits of the statechart editor as commands: add a state or a transition, delete
+ * states with what they hold and every transition that touches them, move states into another
+ * state. Each is one command, so one Undo takes it back whole.
+ */
+public final class StructureEdits {
+
+	private StructureEdits() {
+	}
+
+	/**
+	 * A new state of the given kind: inside the selected state when that is composite (or the
+	 * root), next to it otherwise, and a root of the model when the model is selected. It gets the
+	 * next free label of its parent; a BASIC state is called NewActivity, the others by their label.
+	 */
+	public static Command newState(EditingDomain domain, Model model, Object selected, NodeKind kind) {
+		EObject owner = owner(model, selected);
+		List<Node> siblings = owner instanceof Node parent ? parent.getChildren() : model.getNodes();
+		Node state = StatechartFactory.eINSTANCE.createNode();
+		state.setType(kind.name());
+		String prefix = owner instanceof Node parent ? parent.getLabel() + "." : "";
+		int number = owner instanceof Node ? siblings.size() + 1 : siblings.size();
+		while (labelTaken(siblings, prefix + number)) {
+			number++;
+		}
+		state.setLabel(prefix + number);
+		if (kind == NodeKind.BASIC) {
+			String name = "NewActivity";
+			for (int suffix = 2; nameTaken(siblings, name); suffix++) {
+				name = "NewActivity" + suffix;
+			}
+			state.setName(name);
+			state.setActivity("");
+		} else {
+			state.setName(state.getLabel());
+		}
+		EReference feature = owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES;
+		Command add = AddCommand.create(domain, owner, feature, state);
+		return labelled(add, "New " + kind.name() + " State");
+	}
+
+	private static EObject owner(Model model, Object selected) {
+		if (selected instanceof Node node) {
+			boolean composite = NodeKind.OR.is(node) || NodeKind.AND.is(node) || node.eContainer() instanceof Model;
+			if (composite) {
+				return node;
+			}
+			return node.eContainer() == null ? model : node.eContainer();
+		}
+		return model;
+	}
+
+	private static boolean labelTaken(List<Node> siblings, String label) {
+		return siblings.stream().anyMatch(each -> label.equals(each.getLabel()));
+	}
+
+	private static boolean nameTaken(List<Node> siblings, String name) {
+		return siblings.stream().anyMatch(each -> name.equals(each.getName()));
+	}
+
+	/** A transition from the first selected state to the second, or from a lone selected state to itself. */
+	public static Command newTransition(EditingDomain domain, Model model, List<Node> selected) {
+		if (selected.isEmpty() || selected.size() > 2) {
+			return UnexecutableCommand.INSTANCE;
+		}
+		Node source = selected.get(0);
+		Node target = selected.get(selected.size() - 1);
+		Transition transition = StatechartFactory.eINSTANCE.createTransition();
+		transition.setSource(source);
+		transition.setTarget(target);
+		transition.setName(source.getLabel() + "_TO_" + target.getLabel());
+		transition.setTE("");
+		return labelled(AddCommand.create(domain, model, Literals.MODEL__TRANSITIONS, transition), "New Transition");
+	}
+
+	/** Deletes the selected states (with everything inside them) and transitions, and every transition that touches a deleted state. */
+	public static Command delete(EditingDomain domain, Model model, Collection<?> selected) {
+		Set<EObject> doomed = new LinkedHashSet<>();
+		Set<Node> states = new LinkedHashSet<>();
+		for (Object each : selected) {
+			if (each instanceof Node node) {
+				doomed.add(node);
+				states.add(node);
+				node.eAllContents().forEachRemaining(inner -> {
+					if (inner instanceof Node child) {
+						states.add(child);
+					}
+				});
+			} else if (each instanceof Transition transition) {
+				doomed.add(transition);
+			}
+		}
+		// a state inside another deleted state goes with it
+		doomed.removeIf(each -> each instanceof Node node && hasAncestorIn(node, doomed));
+		for (Transition transition : model.getTransitions()) {
+			if (states.contains(transition.getSource()) || states.contains(transition.getTarget())) {
+				doomed.add(transition);
+			}
+		}
+		if (doomed.isEmpty()) {
+			return UnexecutableCommand.INSTANCE;
+		}
+		return labelled(DeleteCommand.create(domain, new ArrayList<>(doomed)), "Delete");
+	}
+
+	private static boolean hasAncestorIn(Node node, Set<EObject> set) {
+		for (EObject container = node.eContainer(); container != null; container = container.eContainer()) {
+			if (set.contains(container)) {
+				return true;
+			}
+		}
+		return false;
+	}
+
+	/**
+	 * Moves states into another state (or to the top of the model): not into themselves or a
+	 * state inside them, and only where they are not already.
+	 */
+	public static Command move(EditingDomain domain, Model model, List<Node> states, Object target) {
+		EObject owner = target instanceof Node node ? node : target instanceof Model ? model : null;
+		if (owner == null || states.isEmpty()) {
+			return UnexecutableCommand.INSTANCE;
+		}
+		CompoundCommand move = new CompoundCommand(states.size() == 1 ? "Move State" : "Move States");
+		for (Node state : states) {
+			if (state == owner || state.eContainer() == owner || (owner instanceof Node node && hasAncestorIn(node, Set.of(state)))) {
+				return UnexecutableCommand.INSTANCE;
+			}
+			move.append(RemoveCommand.create(domain, state.eContainer(), state.eContainingFeature(), state));
+			move.append(AddCommand.create(domain, owner, owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES, state));
+		}
+		return move;
+	}
+
+	private static Command labelled(Command command, String label) {
+		CompoundCommand compound = new CompoundCommand(label);
+		compound.append(command);
+		return compound;
+	}
+}
