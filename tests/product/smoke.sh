@@ -15,7 +15,7 @@ fail() { echo "smoke: $*" >&2; exit 1; }
 echo "-- the Windows archive"
 listing=$(unzip -l "$windows")
 for part in 'plugins/org.eclipse.swt.win32.win32.x86_64_' 'plugins/org.eclipse.equinox.launcher.win32.win32.x86_64_' \
-            ' kse-workbench.cmd$' 'plugins/org.kse.ui_' 'plugins/org.kse.cli_'; do
+            ' kse-workbench.cmd$' 'plugins/org.kse.ui_' 'plugins/org.kse.cli_' 'plugins/org.kse.doc_' 'plugins/org.eclipse.help.webapp_'; do
   grep -q -E "$part" <<< "$listing" || fail "$(basename "$windows") has no ${part}"
   echo "   has ${part}"
 done
@@ -26,6 +26,9 @@ rm -rf "$out/kse-workbench" "$out/workspace" "$out"/hs_err_*
 mkdir -p "$out/kse-workbench"
 tar xzf "$linux" -C "$out/kse-workbench"
 [ -x "$out/kse-workbench/kse-workbench" ] || fail "no executable start script kse-workbench"
+for part in org.kse.doc_ org.eclipse.help.ui_ org.eclipse.help.webapp_ org.eclipse.equinox.http.jetty_; do
+  ls "$out/kse-workbench/plugins/$part"* > /dev/null 2>&1 || fail "the Linux archive has no $part (the user manual in Eclipse help)"
+done
 
 display=":$(( 90 + RANDOM % 100 ))"
 Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp > "$out/xvfb.log" 2>&1 &
