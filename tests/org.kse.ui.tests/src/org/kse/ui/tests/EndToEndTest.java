@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.stream.Stream;
@@ -25,16 +24,12 @@ import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.jface.wizard.WizardDialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
-import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Text;
 import org.eclipse.ui.IPageLayout;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
-import org.eclipse.ui.handlers.IHandlerService;
 import org.eclipse.ui.ide.IDE;
-import org.eclipse.ui.navigator.CommonNavigator;
 import org.eclipse.ui.views.properties.PropertySheet;
 import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
 import org.junit.jupiter.api.Test;
@@ -60,39 +55,6 @@ class EndToEndTest {
 			"playing = Scan+ | ApproachBall+ | Kick | followBall", "followBall = Stare+.[SpecialAction]");
 	private static final String GUARD = "[worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING]";
 
-	private static IWorkbenchPage page() {
-		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
-	}
-
-	private static <T extends Control> List<T> find(Control root, Class<T> type) {
-		List<T> found = new ArrayList<>();
-		if (type.isInstance(root)) {
-			found.add(type.cast(root));
-		}
-		if (root instanceof Composite composite) {
-			for (Control child : composite.getChildren()) {
-				found.addAll(find(child, type));
-			}
-		}
-		return found;
-	}
-
-	private static void press(Shell shell, String label) {
-		find(shell, Button.class).stream().filter(button -> button.getText().replace("&", "").equals(label)).findFirst()
-				.orElseThrow(() -> new AssertionError("no button " + label + " in " + shell.getText())).notifyListeners(SWT.Selection, null);
-	}
-
-	private static void select(IResource resource) throws Exception {
-		CommonNavigator explorer = (CommonNavigator) page().showView(IPageLayout.ID_PROJECT_EXPLORER);
-		explorer.selectReveal(new StructuredSelection(resource));
-		page().activate(explorer);
-		Ui.settle(300);
-	}
-
-	private static void run(String command) throws Exception {
-		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(command, null);
-	}
-
 	private static int errors(IFile file, String type) {
 		try {
 			return (int) Arrays.stream(file.findMarkers(type, false, IResource.DEPTH_ZERO))
@@ -114,29 +76,29 @@ class EndToEndTest {
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 860);
 		// 1. a new KSE project, without the examples
 		Shell projectWizard = openWizard(init(new NewProjectWizard()));
-		find(projectWizard, Text.class).get(0).setText("Behaviours");
-		find(projectWizard, Button.class).stream().filter(button -> (button.getStyle() & SWT.CHECK) != 0 && button.getText().contains("example"))
+		Ui.find(projectWizard, Text.class).get(0).setText("Behaviours");
+		Ui.find(projectWizard, Button.class).stream().filter(button -> (button.getStyle() & SWT.CHECK) != 0 && button.getText().contains("example"))
 				.forEach(button -> {
 					button.setSelection(false);
 					button.notifyListeners(SWT.Selection, null);
 				});
-		press(projectWizard, "Finish");
+		Ui.press(projectWizard, "Finish");
 		assertTrue(Ui.waitUntil(projectWizard::isDisposed, 20_000), "the project wizard finishes");
 		IProject project = ResourcesPlugin.getWorkspace().getRoot().getProject("Behaviours");
 		assertTrue(project.getFolder("src/activities").exists() && !project.getFile("models/Goalie.stct").exists(), "an empty KSE project");
 		Ui.screenshot("40-new-project");
 
 		// 2. a new formula file, the Goalie typed into it line by line
-		select(project.getFolder("models"));
+		Ui.select(project.getFolder("models"));
 		Shell formulaWizard = openWizard(init(new NewFormulaWizard()));
-		Text fileName = find(formulaWizard, Text.class).stream().filter(text -> text.getText().endsWith(".liveness")).findFirst()
+		Text fileName = Ui.find(formulaWizard, Text.class).stream().filter(text -> text.getText().endsWith(".liveness")).findFirst()
 				.orElseThrow(() -> new AssertionError("no file name field"));
 		fileName.setText("Goalie.liveness");
 		Ui.screenshotOf(formulaWizard, "41-new-formula-wizard");
-		press(formulaWizard, "Finish");
+		Ui.press(formulaWizard, "Finish");
 		assertTrue(Ui.waitUntil(formulaWizard::isDisposed, 20_000), "the formula wizard finishes");
 		IFile formula = project.getFile("models/Goalie.liveness");
-		FormulaEditor editor = assertInstanceOf(FormulaEditor.class, page().getActiveEditor(), "the new formula is open");
+		FormulaEditor editor = assertInstanceOf(FormulaEditor.class, Ui.page().getActiveEditor(), "the new formula is open");
 		IDocument document = editor.getDocumentProvider().getDocument(editor.getEditorInput());
 		document.set("");
 		for (String line : GOALIE) {
@@ -157,20 +119,20 @@ class EndToEndTest {
 		editor.doSave(null);
 
 		// 4. Transform to Statechart
-		page().activate(editor);
-		run("org.kse.ui.transform");
+		Ui.page().activate(editor);
+		Ui.run("org.kse.ui.transform");
 		IFile model = project.getFile("models/Goalie.stct");
 		assertTrue(Ui.waitUntil(model::exists, 30_000), "Goalie.stct written next to the formulas");
 		assertTrue(Ui.waitUntil(() -> Job.getJobManager().isIdle(), 30_000));
 
 		// 5. the model opened; a guard written in the Properties view, with completion
-		StatechartEditor statechart = assertInstanceOf(StatechartEditor.class, IDE.openEditor(page(), model));
+		StatechartEditor statechart = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), model));
 		Transition toPlaying = statechart.getModel().getTransitions().stream()
 				.filter(t -> NodeKind.CONDITION.is(t.getSource()) && "playing".equals(t.getTarget().getName())).findFirst()
 				.orElseThrow(() -> new AssertionError("no choice of 'playing' in the transformed model"));
 		Ui.screenshot("44-model-open");
-		PropertySheet properties = (PropertySheet) page().showView(IPageLayout.ID_PROP_SHEET, null, IWorkbenchPage.VIEW_VISIBLE);
-		page().activate(statechart);
+		PropertySheet properties = (PropertySheet) Ui.page().showView(IPageLayout.ID_PROP_SHEET, null, IWorkbenchPage.VIEW_VISIBLE);
+		Ui.page().activate(statechart);
 		statechart.getViewer().setSelection(new StructuredSelection(toPlaying), true);
 		Ui.settle(300);
 		TabbedPropertySheetPage sheet = (TabbedPropertySheetPage) properties.getCurrentPage();
@@ -196,29 +158,29 @@ class EndToEndTest {
 		assertTrue(!statechart.isDirty(), "and saved");
 
 		// 6. Validate
-		select(model);
-		run("org.kse.ui.validate");
+		Ui.select(model);
+		Ui.run("org.kse.ui.validate");
 		assertTrue(Ui.waitUntil(() -> Job.getJobManager().isIdle(), 30_000));
 		assertEquals(0, errors(model, ModelMarkers.MARKER), "the model is valid");
-		page().showView(IPageLayout.ID_PROBLEM_VIEW);
+		Ui.page().showView(IPageLayout.ID_PROBLEM_VIEW);
 		Ui.screenshot("46-validated");
 
 		// 7. Generate: the first time, the dialog asks for the source folder
-		select(model);
+		Ui.select(model);
 		Throwable[] failure = new Throwable[1];
 		Ui.display().timerExec(800, () -> {
 			try {
 				Shell dialog = Arrays.stream(Ui.display().getShells())
-						.filter(shell -> shell.isVisible() && find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
+						.filter(shell -> shell.isVisible() && Ui.find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
 						.findFirst().orElseThrow(() -> new AssertionError("no Generate dialog"));
 				Ui.screenshotOf(dialog, "47-generate-dialog");
-				press(dialog, "Generate");
+				Ui.press(dialog, "Generate");
 			} catch (Throwable e) {
 				failure[0] = e;
 				Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
 			}
 		});
-		run("org.kse.ui.generate");
+		Ui.run("org.kse.ui.generate");
 		if (failure[0] != null) {
 			throw new AssertionError("driving the Generate dialog failed", failure[0]);
 		}
@@ -242,10 +204,10 @@ class EndToEndTest {
 		assertTrue(containsGuard(charts.get(0)), "the guard written in the Properties view is in the generated C++");
 		IFile generated = project.getFile("src/statecharts/" + name + "/" + name + ".cpp");
 		assertTrue(generated.exists(), "the workspace sees the generated files");
-		select(generated);
-		IDE.openEditor(page(), generated);
+		Ui.select(generated);
+		IDE.openEditor(Ui.page(), generated);
 		Ui.screenshot("48-generated-files");
-		page().closeAllEditors(false);
+		Ui.page().closeAllEditors(false);
 	}
 
 	private static boolean containsGuard(Path folder) throws IOException {
@@ -261,7 +223,7 @@ class EndToEndTest {
 	}
 
 	private static <W extends org.eclipse.ui.IWorkbenchWizard> W init(W wizard) {
-		var selection = page().getSelection();
+		var selection = Ui.page().getSelection();
 		wizard.init(PlatformUI.getWorkbench(), selection instanceof StructuredSelection structured ? structured : StructuredSelection.EMPTY);
 		return wizard;
 	}

@@ -29,7 +29,6 @@ import org.eclipse.swt.widgets.Tree;
 import org.eclipse.swt.widgets.TreeItem;
 import org.eclipse.ui.IEditorPart;
 import org.eclipse.ui.IPageLayout;
-import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.handlers.IHandlerService;
 import org.eclipse.ui.ide.IDE;
@@ -74,11 +73,7 @@ class FormulaWorkflowTest {
 
 	@AfterAll
 	static void closeEditors() {
-		page().closeAllEditors(false);
-	}
-
-	private static IWorkbenchPage page() {
-		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+		Ui.page().closeAllEditors(false);
 	}
 
 	private static List<IMarker> errors() {
@@ -102,7 +97,7 @@ class FormulaWorkflowTest {
 	@Test
 	@Order(1)
 	void theGoalieFormulasOpenInTheFormulaEditorWithoutErrors() throws CoreException {
-		IEditorPart part = IDE.openEditor(page(), formula, FormulaEditor.ID);
+		IEditorPart part = IDE.openEditor(Ui.page(), formula, FormulaEditor.ID);
 		editor = assertInstanceOf(FormulaEditor.class, part);
 		assertTrue(document().get().contains("goalie = Init"));
 		Ui.settle(1500);
@@ -158,8 +153,8 @@ class FormulaWorkflowTest {
 	@Test
 	@Order(4)
 	void theOutlineListsTheCapabilitiesAndF3GoesToADefinition() throws Exception {
-		page().showView(IPageLayout.ID_OUTLINE);
-		page().activate(editor);
+		Ui.page().showView(IPageLayout.ID_OUTLINE);
+		Ui.page().activate(editor);
 		Ui.settle(500);
 		// the editor's outline page, shown in a window of its own to read it
 		IContentOutlinePage outline = editor.getAdapter(IContentOutlinePage.class);

@@ -17,17 +17,11 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.jface.wizard.WizardDialog;
-import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Button;
-import org.eclipse.swt.widgets.Composite;
-import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.swt.widgets.Text;
 import org.eclipse.ui.IPageLayout;
-import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
-import org.eclipse.ui.handlers.IHandlerService;
-import org.eclipse.ui.navigator.CommonNavigator;
 import org.junit.jupiter.api.MethodOrderer.OrderAnnotation;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
@@ -45,44 +39,6 @@ import org.kse.ui.wizards.NewProjectWizard;
 class ModelWorkflowTest {
 
 	private static IProject project;
-
-	private static IWorkbenchPage page() {
-		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
-	}
-
-	private static <T extends Control> List<T> find(Composite root, Class<T> type) {
-		List<T> found = new ArrayList<>();
-		for (Control child : root.getChildren()) {
-			if (type.isInstance(child)) {
-				found.add(type.cast(child));
-			}
-			if (child instanceof Composite composite) {
-				found.addAll(find(composite, type));
-			}
-		}
-		return found;
-	}
-
-	private static Button button(Shell shell, String label) {
-		return find(shell, Button.class).stream().filter(button -> button.getText().replace("&", "").equals(label)).findFirst()
-				.orElseThrow(() -> new AssertionError("no button " + label + " in " + shell.getText()));
-	}
-
-	private static void press(Button button) {
-		button.notifyListeners(SWT.Selection, null);
-	}
-
-	/** Selects a file in the Project Explorer, so that commands work on it as a user's click would. */
-	private static void select(IFile file) throws Exception {
-		CommonNavigator explorer = (CommonNavigator) page().showView(IPageLayout.ID_PROJECT_EXPLORER);
-		explorer.selectReveal(new StructuredSelection(file));
-		page().activate(explorer);
-		Ui.settle(300);
-	}
-
-	private static void run(String command) throws Exception {
-		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(command, null);
-	}
 
 	private static List<IMarker> problems(IFile file, int severity) throws CoreException {
 		List<IMarker> found = new ArrayList<>();
@@ -112,11 +68,11 @@ class ModelWorkflowTest {
 		WizardDialog dialog = new WizardDialog(shell, wizard);
 		dialog.setBlockOnOpen(false);
 		dialog.open();
-		Text name = find(dialog.getShell(), Text.class).get(0);
+		Text name = Ui.find(dialog.getShell(), Text.class).get(0);
 		name.setText("Team");
 		Ui.settle(200);
 		Ui.screenshotOf(dialog.getShell(), "10-new-kse-project-wizard");
-		press(button(dialog.getShell(), "Finish"));
+		Ui.press(Ui.button(dialog.getShell(), "Finish"));
 		assertTrue(Ui.waitUntil(() -> dialog.getShell() == null || dialog.getShell().isDisposed(), 20_000), "the wizard finishes");
 
 		project = ResourcesPlugin.getWorkspace().getRoot().getProject("Team");
@@ -137,8 +93,8 @@ class ModelWorkflowTest {
 	@Order(2)
 	void validateMarksABrokenGuardWithTheTransitionsLabel() throws Exception {
 		IFile goalie = project.getFile("models/Goalie.stct");
-		select(goalie);
-		run("org.kse.ui.validate");
+		Ui.select(goalie);
+		Ui.run("org.kse.ui.validate");
 		assertTrue(Ui.waitUntil(Job::noneRunning, 20_000));
 		assertEquals(List.of(), problems(goalie, IMarker.SEVERITY_ERROR), "the Goalie example is valid");
 
@@ -149,30 +105,30 @@ class ModelWorkflowTest {
 			assertTrue(!broken.equals(text), "a guard to break");
 			Files.writeString(file, broken);
 			goalie.refreshLocal(IResource.DEPTH_ZERO, null);
-			run("org.kse.ui.validate");
+			Ui.run("org.kse.ui.validate");
 			assertTrue(Ui.waitUntil(() -> errors(goalie) > 0, 20_000), "the broken guard is marked");
 			List<IMarker> errors = problems(goalie, IMarker.SEVERITY_ERROR);
 			List<String> messages = errors.stream().map(marker -> marker.getAttribute(IMarker.MESSAGE, "")).toList();
 			IMarker marker = errors.stream().filter(error -> error.getAttribute(IMarker.MESSAGE, "").contains("_TO_")).findFirst()
 					.orElseThrow(() -> new AssertionError("no error names the transition: " + messages));
 			assertNotNull(marker.getAttribute(ModelMarkers.ELEMENT, null), () -> "points at the model element: " + messages);
-			page().showView(IPageLayout.ID_PROBLEM_VIEW);
+			Ui.page().showView(IPageLayout.ID_PROBLEM_VIEW);
 			Ui.settle(1500);
 			Ui.screenshot("12-validation-problem");
 			// opening the problem (a double-click in the Problems view) selects the transition in the statechart editor
-			var opened = org.eclipse.ui.ide.IDE.openEditor(page(), marker);
+			var opened = org.eclipse.ui.ide.IDE.openEditor(Ui.page(), marker);
 			var selected = ((org.eclipse.jface.viewers.IStructuredSelection) ((org.kse.ui.model.editor.StatechartEditor) opened).getViewer()
 					.getSelection()).getFirstElement();
 			assertTrue(selected instanceof org.kse.model.statechart.Transition transition
 					&& marker.getAttribute(IMarker.MESSAGE, "").contains(transition.getName()), () -> "selected: " + selected);
 			Ui.screenshot("12b-problem-opened");
-			page().closeAllEditors(false);
+			Ui.page().closeAllEditors(false);
 		} finally {
 			Files.writeString(file, text);
 			goalie.refreshLocal(IResource.DEPTH_ZERO, null);
 		}
-		select(goalie);
-		run("org.kse.ui.validate");
+		Ui.select(goalie);
+		Ui.run("org.kse.ui.validate");
 		assertTrue(Ui.waitUntil(() -> errors(goalie) == 0, 20_000), "fixed, the marker goes");
 	}
 
@@ -182,8 +138,8 @@ class ModelWorkflowTest {
 		IFile goalie = project.getFile("models/Goalie.stct");
 		IFile kick = project.getFile("src/activities/Kick/Kick.cpp");
 		String handWritten = Files.readString(Path.of(kick.getLocationURI()));
-		select(goalie);
-		run("org.kse.ui.generate");
+		Ui.select(goalie);
+		Ui.run("org.kse.ui.generate");
 		IFile statechart = project.getFile("src/statecharts/Goalie/Goalie.cpp");
 		assertTrue(Ui.waitUntil(statechart::exists, 30_000), "src/statecharts/Goalie/Goalie.cpp generated");
 		assertTrue(Ui.waitUntil(Job::noneRunning, 30_000));
@@ -197,26 +153,26 @@ class ModelWorkflowTest {
 	void theFirstGenerationOfAModelAsksForItsSourceFolder() throws Exception {
 		IFile attacker = project.getFile("models/Attacker.stct");
 		attacker.setPersistentProperty(ModelFiles.SOURCE_FOLDER, null);
-		select(attacker);
+		Ui.select(attacker);
 		boolean[] shown = new boolean[1];
 		Throwable[] failure = new Throwable[1];
 		Ui.display().timerExec(800, () -> {
 			try {
 				Shell dialog = java.util.Arrays.stream(Ui.display().getShells())
-						.filter(shell -> shell.isVisible() && find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
+						.filter(shell -> shell.isVisible() && Ui.find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
 						.findFirst().orElseThrow(() -> new AssertionError("no Generate dialog"));
 				shown[0] = true;
 				Ui.screenshotOf(dialog, "14-generate-dialog");
-				Text folder = find(dialog, Text.class).stream().filter(text -> text.getText().startsWith("/Team")).findFirst()
+				Text folder = Ui.find(dialog, Text.class).stream().filter(text -> text.getText().startsWith("/Team")).findFirst()
 						.orElseThrow(() -> new AssertionError("no source folder field"));
 				folder.setText("/Team/generated");
-				press(button(dialog, "Generate"));
+				Ui.press(Ui.button(dialog, "Generate"));
 			} catch (Throwable e) {
 				failure[0] = e;
 				java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
 			}
 		});
-		run("org.kse.ui.generate");
+		Ui.run("org.kse.ui.generate");
 		if (failure[0] != null) {
 			throw new AssertionError("driving the Generate dialog failed", failure[0]);
 		}
@@ -235,8 +191,8 @@ class ModelWorkflowTest {
 		String before = Files.readString(file);
 		Files.writeString(file, before.replace("label=\"0.2\"", "label=\"9.9\""));
 		defender.refreshLocal(IResource.DEPTH_ZERO, null);
-		select(defender);
-		run("org.kse.ui.label");
+		Ui.select(defender);
+		Ui.run("org.kse.ui.label");
 		assertTrue(Ui.waitUntil(() -> {
 			try {
 				return Files.readString(file).equals(before);
@@ -250,33 +206,33 @@ class ModelWorkflowTest {
 	@Order(6)
 	void editActivityOpensItsCppAndOpenFormulaItsFormulas() throws Exception {
 		IFile goalie = project.getFile("models/Goalie.stct");
-		select(goalie);
+		Ui.select(goalie);
 		Throwable[] failure = new Throwable[1];
 		Ui.display().timerExec(800, () -> {
 			try {
 				Shell dialog = java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> "Edit Activity".equals(shell.getText())).findFirst()
 						.orElseThrow(() -> new AssertionError("no Edit Activity dialog"));
-				find(dialog, Text.class).get(0).setText("Kick");
+				Ui.find(dialog, Text.class).get(0).setText("Kick");
 				Ui.settle(300);
 				Ui.screenshotOf(dialog, "15-edit-activity");
-				press(button(dialog, "OK"));
+				Ui.press(Ui.button(dialog, "OK"));
 			} catch (Throwable e) {
 				failure[0] = e;
 				java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
 			}
 		});
-		run("org.kse.ui.editActivity");
+		Ui.run("org.kse.ui.editActivity");
 		if (failure[0] != null) {
 			throw new AssertionError("driving the Edit Activity dialog failed", failure[0]);
 		}
-		assertEquals("Kick.cpp", page().getActiveEditor().getEditorInput().getName(), "the activity's C++ is open");
+		assertEquals("Kick.cpp", Ui.page().getActiveEditor().getEditorInput().getName(), "the activity's C++ is open");
 		Ui.screenshot("16-activity-open");
 
-		select(goalie);
-		run("org.kse.ui.openFormula");
-		assertEquals("Goalie.txt", page().getActiveEditor().getEditorInput().getName());
-		assertTrue(page().getActiveEditor() instanceof org.kse.ui.formula.FormulaEditor);
-		page().closeAllEditors(false);
+		Ui.select(goalie);
+		Ui.run("org.kse.ui.openFormula");
+		assertEquals("Goalie.txt", Ui.page().getActiveEditor().getEditorInput().getName());
+		assertTrue(Ui.page().getActiveEditor() instanceof org.kse.ui.formula.FormulaEditor);
+		Ui.page().closeAllEditors(false);
 	}
 
 	@Test
@@ -287,8 +243,8 @@ class ModelWorkflowTest {
 		preferences.put(org.kse.ui.preferences.KsePreferences.GENERATOR_COMMAND, "sh -c \"echo generated from {model} > '{folder}/external.txt'\"");
 		try {
 			IFile goalie = project.getFile("models/Goalie.stct");
-			select(goalie);
-			run("org.kse.ui.generate");
+			Ui.select(goalie);
+			Ui.run("org.kse.ui.generate");
 			IFile output = project.getFile("src/external.txt");
 			assertTrue(Ui.waitUntil(output::exists, 30_000), "the external generator ran and the folder was refreshed");
 			assertEquals("generated from " + Path.of(goalie.getLocationURI()), Files.readString(Path.of(output.getLocationURI())).strip());
@@ -302,7 +258,7 @@ class ModelWorkflowTest {
 	@Order(8)
 	void theTreeEditorEditsAPropertyWithUndoRedoAndSave() throws Exception {
 		IFile defender = project.getFile("models/Defender.stct");
-		var part = org.eclipse.ui.ide.IDE.openEditor(page(), defender);
+		var part = org.eclipse.ui.ide.IDE.openEditor(Ui.page(), defender);
 		var editor = (org.kse.ui.model.editor.StatechartEditor) part;
 		var tree = editor.getViewer().getTree();
 		var model = tree.getItem(0);
@@ -317,8 +273,8 @@ class ModelWorkflowTest {
 		}
 		assertNotNull(init);
 		editor.getViewer().setSelection(new StructuredSelection(init), true);
-		page().showView(IPageLayout.ID_PROP_SHEET);
-		page().activate(editor);
+		Ui.page().showView(IPageLayout.ID_PROP_SHEET);
+		Ui.page().activate(editor);
 		var properties = editor.propertySource(init);
 		properties.setPropertyValue("name", "Initialise");
 		Ui.settle(300);
@@ -342,14 +298,14 @@ class ModelWorkflowTest {
 		assertTrue(!editor.isDirty());
 		String saved = Files.readString(Path.of(defender.getLocationURI()));
 		assertTrue(saved.contains("name=\"Initialise\" label=\"0.2\" type=\"BASIC\""), "saved with the new name and the old kind");
-		page().closeAllEditors(false);
+		Ui.page().closeAllEditors(false);
 	}
 
 	@Test
 	@Order(9)
 	void aGuardIsEditedWithCompletionFromTheMessageCatalogAndCheckedWhileTyped() throws Exception {
 		IFile goalie = project.getFile("models/Goalie.stct");
-		var editor = (org.kse.ui.model.editor.StatechartEditor) org.eclipse.ui.ide.IDE.openEditor(page(), goalie);
+		var editor = (org.kse.ui.model.editor.StatechartEditor) org.eclipse.ui.ide.IDE.openEditor(Ui.page(), goalie);
 		org.kse.model.statechart.Transition transition = editor.getModel().getTransitions().stream()
 				.filter(t -> "0.2.2.2_TO_playing".equals(t.getName())).findFirst().orElseThrow();
 		editor.getViewer().setSelection(new StructuredSelection(transition), true);
@@ -382,7 +338,7 @@ class ModelWorkflowTest {
 			assertTrue(dialog.getErrorMessage().contains("no_such_field"), dialog.getErrorMessage());
 			Ui.screenshotOf(dialog.getShell(), "19-guard-error-while-typing");
 			document.set("[worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING && behavior.State.HeadToBMessage.ballfound()>0]");
-			press(button(dialog.getShell(), "OK"));
+			Ui.press(Ui.button(dialog.getShell(), "OK"));
 		} finally {
 			if (dialog.getShell() != null && !dialog.getShell().isDisposed()) {
 				dialog.close();
@@ -394,7 +350,7 @@ class ModelWorkflowTest {
 		assertTrue(editor.isDirty());
 		editor.getEditorSite().getActionBars().getGlobalActionHandler(org.eclipse.ui.actions.ActionFactory.UNDO.getId()).run();
 		assertEquals(before, transition.getTE(), "the edit is undoable");
-		page().closeAllEditors(false);
+		Ui.page().closeAllEditors(false);
 	}
 
 	private static boolean shows(org.eclipse.swt.widgets.TreeItem[] items, String text) {

@@ -22,7 +22,6 @@ import org.eclipse.jface.text.source.ISourceViewer;
 import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.CCombo;
-import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Menu;
@@ -39,7 +38,6 @@ import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.kse.model.NodeKind;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 import org.kse.model.statechart.Variable;
@@ -75,16 +73,12 @@ class StatechartEditorTest {
 			file.create(new ByteArrayInputStream(goalie), true, null);
 		}
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 860);
-		editor = assertInstanceOf(StatechartEditor.class, IDE.openEditor(page(), file, StatechartEditor.ID));
+		editor = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), file, StatechartEditor.ID));
 	}
 
 	@AfterEach
 	void close() {
-		page().closeAllEditors(false);
-	}
-
-	private static IWorkbenchPage page() {
-		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+		Ui.page().closeAllEditors(false);
 	}
 
 	private Node state(String name) {
@@ -103,8 +97,8 @@ class StatechartEditorTest {
 
 	/** Selects an element in the editor and shows its tab in the Properties view; the section of that tab. */
 	private <T extends ISection> T show(Object element, String tab, Class<T> type) throws Exception {
-		PropertySheet view = (PropertySheet) page().showView(IPageLayout.ID_PROP_SHEET, null, IWorkbenchPage.VIEW_VISIBLE);
-		page().activate(editor);
+		PropertySheet view = (PropertySheet) Ui.page().showView(IPageLayout.ID_PROP_SHEET, null, IWorkbenchPage.VIEW_VISIBLE);
+		Ui.page().activate(editor);
 		editor.getViewer().setSelection(StructuredSelection.EMPTY);
 		editor.getViewer().setSelection(new StructuredSelection(element), true);
 		Ui.settle(300);
@@ -117,22 +111,9 @@ class StatechartEditorTest {
 				.orElseThrow(() -> new AssertionError("no " + type.getSimpleName() + " on " + tab));
 	}
 
-	private static <T extends Control> List<T> find(Control root, Class<T> type) {
-		List<T> found = new ArrayList<>();
-		if (type.isInstance(root)) {
-			found.add(type.cast(root));
-		}
-		if (root instanceof Composite composite) {
-			for (Control child : composite.getChildren()) {
-				found.addAll(find(child, type));
-			}
-		}
-		return found;
-	}
-
-	private static Control controlsOf(ISection section) throws Exception {
-		// the section's controls live in the Properties view's page
-		PropertySheet view = (PropertySheet) page().findView(IPageLayout.ID_PROP_SHEET);
+	/** The controls of the Properties view's page: where the sections' fields are. */
+	private static Control properties() {
+		PropertySheet view = (PropertySheet) Ui.page().findView(IPageLayout.ID_PROP_SHEET);
 		return ((TabbedPropertySheetPage) view.getCurrentPage()).getControl();
 	}
 
@@ -151,11 +132,11 @@ class StatechartEditorTest {
 	void theStateTabEditsNameTypeAndVariablesEachUndoable() throws Exception {
 		Node kick = state("Kick");
 		StateSection section = show(kick, "org.kse.ui.tab.state", StateSection.class);
-		Control controls = controlsOf(section);
-		List<Text> texts = find(controls, Text.class);
+		Control controls = properties();
+		List<Text> texts = Ui.find(controls, Text.class);
 		Text name = texts.stream().filter(text -> "Kick".equals(text.getText())).findFirst().orElseThrow(() -> new AssertionError("no name field"));
 		assertTrue(texts.stream().anyMatch(text -> "0.2.2.3.5".equals(text.getText())), "the label is shown");
-		CCombo kind = find(controls, CCombo.class).get(0);
+		CCombo kind = Ui.find(controls, CCombo.class).get(0);
 		assertEquals("BASIC", kind.getText());
 		Ui.screenshot("20-state-tab");
 
@@ -183,7 +164,7 @@ class StatechartEditorTest {
 
 		Node scan = state("Scan");
 		show(scan, "org.kse.ui.tab.state", StateSection.class);
-		var table = find(controlsOf(null), org.eclipse.swt.widgets.Table.class).stream().filter(t -> (t.getStyle() & SWT.CHECK) != 0).findFirst()
+		var table = Ui.find(properties(), org.eclipse.swt.widgets.Table.class).stream().filter(t -> (t.getStyle() & SWT.CHECK) != 0).findFirst()
 				.orElseThrow(() -> new AssertionError("no variables list"));
 		assertEquals(1, table.getItemCount(), "the model's variable is offered");
 		table.getItem(0).setChecked(true);
@@ -205,7 +186,7 @@ class StatechartEditorTest {
 		TransitionSection section = show(transition, "org.kse.ui.tab.transition", TransitionSection.class);
 		var field = section.getExpression();
 		assertEquals(before, field.getText(), "the field shows the expression");
-		List<CCombo> combos = find(controlsOf(section), CCombo.class);
+		List<CCombo> combos = Ui.find(properties(), CCombo.class);
 		assertTrue(combos.get(0).getText().contains("0.2.2.2") && combos.get(1).getText().contains("playing"), "source and target");
 
 		var viewer = field.getViewer();
@@ -215,7 +196,7 @@ class StatechartEditorTest {
 		viewer.setSelectedRange(document.getLength(), 0);
 		viewer.doOperation(ISourceViewer.CONTENTASSIST_PROPOSALS);
 		assertTrue(Ui.waitUntil(() -> document.get().endsWith("player_state()"), 5000), () -> "the only field is completed: " + document.get());
-		Label problem = find(controlsOf(section), Label.class).stream().filter(label -> label.getText().startsWith("1:")).findFirst()
+		Label problem = Ui.find(properties(), Label.class).stream().filter(label -> label.getText().startsWith("1:")).findFirst()
 				.orElseThrow(() -> new AssertionError("the unfinished guard's problem is shown under the field"));
 		assertTrue(problem.getText().contains("1:"), problem.getText());
 		Ui.screenshot("22-transition-tab-guard-error");
@@ -235,7 +216,7 @@ class StatechartEditorTest {
 	@Test
 	void theAdvancedTabListsEveryAttribute() throws Exception {
 		show(state("Stare"), "org.kse.ui.tab.advanced", ISection.class);
-		var tree = find(controlsOf(null), org.eclipse.swt.widgets.Tree.class).get(0);
+		var tree = Ui.find(properties(), org.eclipse.swt.widgets.Tree.class).get(0);
 		List<String> shown = new ArrayList<>();
 		for (var item : tree.getItems()) {
 			shown.add(item.getText(0));

@@ -3,21 +3,76 @@ package org.kse.ui.tests;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.BooleanSupplier;
 
+import org.eclipse.core.resources.IResource;
+import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Image;
 import org.eclipse.swt.graphics.ImageLoader;
 import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Shell;
+import org.eclipse.ui.IPageLayout;
+import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
+import org.eclipse.ui.handlers.IHandlerService;
+import org.eclipse.ui.navigator.CommonNavigator;
 
-/** What the UI tests share: waiting while the workbench runs, and screenshots a person can look at. */
+/** What the UI tests share: finding and pressing controls, selecting and running commands, waiting while the workbench runs, and screenshots a person can look at. */
 final class Ui {
 
 	private Ui() {
+	}
+
+	static IWorkbenchPage page() {
+		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+	}
+
+	/** The controls of a type in a window or composite, the root included, depth first. */
+	static <T extends Control> List<T> find(Control root, Class<T> type) {
+		List<T> found = new ArrayList<>();
+		if (type.isInstance(root)) {
+			found.add(type.cast(root));
+		}
+		if (root instanceof Composite composite) {
+			for (Control child : composite.getChildren()) {
+				found.addAll(find(child, type));
+			}
+		}
+		return found;
+	}
+
+	static Button button(Shell shell, String label) {
+		return find(shell, Button.class).stream().filter(button -> button.getText().replace("&", "").equals(label))
+				.findFirst().orElseThrow(() -> new AssertionError("no button " + label + " in " + shell.getText()));
+	}
+
+	/** A click on a button. */
+	static void press(Button button) {
+		button.notifyListeners(SWT.Selection, null);
+	}
+
+	static void press(Shell shell, String label) {
+		press(button(shell, label));
+	}
+
+	/** Selects a resource in the Project Explorer, so that commands work on it as a user's click would. */
+	static void select(IResource resource) throws Exception {
+		var explorer = (CommonNavigator) page().showView(IPageLayout.ID_PROJECT_EXPLORER);
+		explorer.selectReveal(new StructuredSelection(resource));
+		page().activate(explorer);
+		settle(300);
+	}
+
+	static void run(String command) throws Exception {
+		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(command, null);
 	}
 
 	static Display display() {
