@@ -40,6 +40,10 @@ public class GenerateHandler extends AbstractHandler {
 			return null;
 		}
 		IFile file = files.get(0);
+		// the generator reads the file: unsaved edits of an open editor are saved first (the user is asked)
+		if (!org.eclipse.ui.ide.IDE.saveAllEditors(new org.eclipse.core.resources.IResource[] { file }, true)) {
+			return null;
+		}
 		IContainer folder = ModelFiles.sourceFolder(file);
 		boolean configure = Boolean.parseBoolean(event.getParameter(CONFIGURE));
 		if (folder == null || configure) {

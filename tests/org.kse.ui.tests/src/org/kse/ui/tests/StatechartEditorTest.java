@@ -309,6 +309,33 @@ class StatechartEditorTest {
 		}, 10_000), "the editor without unsaved edits shows the file as it is now");
 	}
 
+	@Test
+	void labelFromTheEditorAsksToSaveFirstAndTheEditorShowsTheNewLabels() throws Exception {
+		Node kick = state("Kick");
+		editor.execute(org.eclipse.emf.edit.command.SetCommand.create(editor.getEditingDomain(), kick,
+				org.kse.model.statechart.StatechartPackage.Literals.NODE__LABEL, "9.9"));
+		assertTrue(editor.isDirty());
+		Ui.page().activate(editor);
+		editor.getViewer().setSelection(new StructuredSelection(kick), true);
+		boolean[] asked = new boolean[1];
+		Ui.display().timerExec(800, () -> Arrays.stream(Ui.display().getShells()).filter(shell -> shell.isVisible() && shell.getParent() != null)
+				.findFirst().ifPresent(dialog -> {
+					Ui.screenshotOf(dialog, "25-save-before-label");
+					try {
+						Ui.press(dialog, "Save");
+						asked[0] = true;
+					} finally {
+						if (!dialog.isDisposed()) {
+							dialog.close();
+						}
+					}
+				}));
+		Ui.run("org.kse.ui.label");
+		assertTrue(asked[0], "the user is asked to save the edited model first");
+		assertTrue(Ui.waitUntil(() -> !editor.isDirty() && "0.2.2.3.5".equals(state("Kick").getLabel()), 20_000),
+				"saved, labelled, and the editor shows the labels again");
+	}
+
 	/** The problem line of an expression field, as the section shows it. */
 	private static final class ExpressionFieldSummary {
 		static String of(org.kse.ui.model.editor.ExpressionField field) {
