@@ -46,6 +46,8 @@ public final class Kse {
 			                      renumber labels and rename states and transitions
 			  generate <model.stct> <source-folder> [--logger]
 			                      write the Monas C++ of a model into a source tree
+			  diagram <model.stct> [-o diagram.svg] [--arrange] [--save-notation]
+			                      draw the statechart as an SVG picture
 			  help [command]      show help
 			  version             show the versions of KSE and of what it runs on
 
@@ -90,6 +92,18 @@ public final class Kse {
 			  --logger     conditions print their result when evaluated
 			  -q, --quiet  no progress lines""";
 
+	private static final String DIAGRAM_HELP = """
+			usage: kse diagram <model.stct> [-o diagram.svg] [--arrange] [--save-notation]
+
+			Draws the statechart in the thesis' notation as SVG: START a black disc, END a white
+			disc with a black centre, CONDITION a circled C, BASIC green, OR yellow, AND light blue;
+			transitions labelled with the first line of their expression (all of it on hover).
+			Positions come from <Model>.notation.json beside the model, else from the original
+			tool's <Model>.kse diagram, else ELK arranges the states.
+			  -o, --output FILE   where to write the picture (default: the model file with .svg)
+			  --arrange           arrange every state anew with ELK
+			  --save-notation     write the positions used to <Model>.notation.json""";
+
 	private final PrintStream out;
 	private final PrintStream err;
 	private boolean quiet;
@@ -111,6 +125,7 @@ public final class Kse {
 				case "validate" -> validate(rest);
 				case "label" -> label(rest);
 				case "generate" -> generate(rest);
+				case "diagram" -> diagram(rest);
 				case "help", "-h", "--help" -> help(rest);
 				case "version", "--version" -> version();
 				default -> usage("unknown command '" + args[0] + "'");
@@ -130,6 +145,7 @@ public final class Kse {
 			case "validate" -> VALIDATE_HELP;
 			case "label" -> LABEL_HELP;
 			case "generate" -> GENERATE_HELP;
+			case "diagram" -> DIAGRAM_HELP;
 			default -> USAGE;
 		});
 		return OK;
@@ -245,6 +261,41 @@ public final class Kse {
 			err.println("kse: " + file + ": " + e.errors().size() + (e.errors().size() == 1 ? " error" : " errors") + ", nothing generated");
 			return INVALID;
 		}
+	}
+
+	private int diagram(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output"), List.of("--arrange", "--save-notation"));
+		if (options.help) {
+			out.println(DIAGRAM_HELP);
+			return OK;
+		}
+		Path file = options.single("model file");
+		String output = options.value("-o", "--output");
+		Path picture = output != null ? Path.of(output) : file.resolveSibling(file.getFileName().toString().replaceFirst("\\.stct$", "") + ".svg");
+		Model model = StatechartResources.load(file);
+		org.kse.notation.Notation notation;
+		String from;
+		if (options.flag("--arrange")) {
+			notation = org.kse.notation.Arrange.all(model);
+			from = "arranged with ELK";
+		} else {
+			var opened = org.kse.notation.NotationFiles.open(file, model);
+			if (opened.problem() != null) {
+				err.println("kse: warning: " + opened.problem() + "; the states are arranged anew");
+			}
+			notation = opened.notation();
+			from = switch (opened.source()) {
+				case SIDECAR -> "from " + org.kse.notation.NotationFiles.beside(file).getFileName();
+				case LEGACY_DIAGRAM -> "from the original diagram " + org.kse.notation.LegacyNotation.beside(file).getFileName();
+				case ARRANGED -> "arranged with ELK";
+			};
+		}
+		if (options.flag("--save-notation")) {
+			org.kse.notation.NotationFiles.write(file, model, notation);
+		}
+		StatechartResources.writeAtomically(picture, org.kse.notation.SvgDiagram.render(model, notation).getBytes(StandardCharsets.UTF_8));
+		out.println("drew " + picture + " (" + statistics(model) + "; positions " + from + ")");
+		return OK;
 	}
 
 	/** "label (name): message" becomes "label (name): severity: message". */

@@ -82,7 +82,7 @@ public final class Arrange {
 		configure(shape);
 		shape.setProperty(CoreOptions.PADDING, new ElkPadding(HEADER + PADDING, PADDING, PADDING, PADDING));
 		shape.setProperty(CoreOptions.NODE_SIZE_CONSTRAINTS, java.util.EnumSet.of(SizeConstraint.MINIMUM_SIZE));
-		shape.setProperty(CoreOptions.NODE_SIZE_MINIMUM, new org.eclipse.elk.core.math.KVector(Shapes.size(node).width(), HEADER + 2 * PADDING));
+		shape.setProperty(CoreOptions.NODE_SIZE_MINIMUM, new org.eclipse.elk.core.math.KVector(Shapes.headerWidth(node), HEADER + 2 * PADDING));
 		for (Node child : children) {
 			add(shape, child, shapes);
 		}

@@ -22,6 +22,16 @@ public final class Shapes {
 			return new Bounds(0, 0, 28, 28);
 		}
 		String name = node.getName() == null ? "" : node.getName();
+		if (!node.getChildren().isEmpty()) {
+			return new Bounds(0, 0, headerWidth(node), Arrange.HEADER);
+		}
 		return new Bounds(0, 0, Math.max(72, 7.5 * name.length() + 24), 36);
+	}
+
+	/** A composite's header holds its name (bold) and its label: at least this wide. */
+	public static double headerWidth(Node node) {
+		int name = node.getName() == null ? 0 : node.getName().length();
+		int label = node.getLabel() == null ? 0 : node.getLabel().length();
+		return 8 * name + 6.5 * label + 40;
 	}
 }

@@ -8,7 +8,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
@@ -35,23 +34,15 @@ class NotationTest {
 		return Models.legacyFiles(".kse");
 	}
 
-	private static List<Node> states(Model model) {
-		List<Node> states = new ArrayList<>();
-		model.eAllContents().forEachRemaining(each -> {
-			if (each instanceof Node node) {
-				states.add(node);
-			}
-		});
-		return states;
-	}
-
 	/** Every child inside its parent (below the header), siblings apart. */
 	private static void assertWellPlaced(Model model, Notation notation) {
-		for (Node state : states(model)) {
+		for (Node state : Models.allNodes(model)) {
 			Bounds bounds = notation.get(state);
 			assertNotNull(bounds, () -> "placed: " + state.getLabel());
 			assertTrue(bounds.width() > 0 && bounds.height() > 0, () -> state.getLabel() + " has a size: " + bounds);
 			List<Node> children = state.getChildren();
+			assertTrue(children.isEmpty() || bounds.width() >= org.kse.notation.Shapes.headerWidth(state) - 0.5,
+					() -> state.getLabel() + " is wide enough for its name and label: " + bounds);
 			for (int i = 0; i < children.size(); i++) {
 				Bounds child = notation.get(children.get(i));
 				String label = children.get(i).getLabel();
@@ -70,10 +61,10 @@ class NotationTest {
 	void arrangeAllPlacesEveryStateOfTheGoalieInsideItsParentWithoutOverlaps() throws IOException {
 		Model goalie = StatechartResources.load(Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.stct"));
 		Notation notation = Arrange.all(goalie);
-		assertEquals(states(goalie).size(), notation.size());
+		assertEquals(Models.allNodes(goalie).size(), notation.size());
 		assertWellPlaced(goalie, notation);
 		Notation again = Arrange.all(goalie);
-		for (Node state : states(goalie)) {
+		for (Node state : Models.allNodes(goalie)) {
 			assertEquals(notation.get(state), again.get(state), "the same model is arranged the same way");
 		}
 	}
@@ -119,7 +110,7 @@ class NotationTest {
 		var reopened = NotationFiles.open(modelFile, StatechartResources.load(modelFile));
 		assertEquals(NotationFiles.Source.SIDECAR, reopened.source());
 		Model again = StatechartResources.load(modelFile);
-		for (Node state : states(again)) {
+		for (Node state : Models.allNodes(again)) {
 			Node same = (Node) model.eResource().getEObject(Notation.path(state));
 			assertEquals(opened.notation().get(same), reopened.notation().get(state), state.getLabel());
 		}
