@@ -87,7 +87,8 @@ public final class Labeler {
 		return new ArrayList<>(ordered);
 	}
 
-	private static void relabel(Node node, String label) {
+	/** Gives a state a new label; a state named after its label (or auxiliary, or unnamed) takes the new label as name. */
+	static void relabel(Node node, String label) {
 		String oldLabel = node.getLabel();
 		String name = node.getName();
 		NodeKind kind = NodeKind.of(node);

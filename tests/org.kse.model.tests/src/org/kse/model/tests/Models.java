@@ -140,6 +140,27 @@ final class Models {
 		return nodes;
 	}
 
+	/** The states inside a state (not the state itself), depth first. */
+	static List<Node> allNodes(Node state) {
+		List<Node> nodes = new ArrayList<>();
+		state.eAllContents().forEachRemaining(element -> {
+			if (element instanceof Node node) {
+				nodes.add(node);
+			}
+		});
+		return nodes;
+	}
+
+	/** The state is the ancestor or inside it. */
+	static boolean isInside(Node state, Node ancestor) {
+		for (org.eclipse.emf.ecore.EObject each = state; each != null; each = each.eContainer()) {
+			if (each == ancestor) {
+				return true;
+			}
+		}
+		return false;
+	}
+
 	static Node byName(Model model, String name) {
 		List<Node> found = allNodes(model).stream().filter(node -> name.equals(node.getName())).toList();
 		assertTrue(found.size() == 1, () -> "expected one state named " + name + ", found " + found.size());

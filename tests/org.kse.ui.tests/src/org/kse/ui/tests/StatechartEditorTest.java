@@ -255,7 +255,7 @@ class StatechartEditorTest {
 		Transition link = editor.getModel().getTransitions().get(editor.getModel().getTransitions().size() - 1);
 		assertEquals(kick, link.getSource());
 		assertEquals(added, link.getTarget());
-		assertEquals("0.2.2.3.5_TO_" + added.getLabel(), link.getName());
+		assertEquals("Kick_TO_NewActivity", link.getName(), "named as Label names transitions");
 
 		int transitions = editor.getModel().getTransitions().size();
 		long touchingKick = editor.getModel().getTransitions().stream().filter(t -> t.getSource() == kick || t.getTarget() == kick).count();
@@ -334,6 +334,39 @@ class StatechartEditorTest {
 		assertTrue(asked[0], "the user is asked to save the edited model first");
 		assertTrue(Ui.waitUntil(() -> !editor.isDirty() && "0.2.2.3.5".equals(state("Kick").getLabel()), 20_000),
 				"saved, labelled, and the editor shows the labels again");
+	}
+
+	@Test
+	void aCompositeIsCopiedAndPastedIntoAnotherWithNewLabelsAndOneUndo() throws Exception {
+		Node followBall = state("followBall");
+		Node nonPlaying = state("nonPlaying");
+		int children = nonPlaying.getChildren().size();
+		int transitions = editor.getModel().getTransitions().size();
+		var actions = editor.getEditorSite().getActionBars();
+		editor.getViewer().setSelection(new StructuredSelection(followBall), true);
+		actions.getGlobalActionHandler(ActionFactory.COPY.getId()).run();
+		editor.getViewer().setSelection(new StructuredSelection(nonPlaying), true);
+		Ui.settle(100);
+		assertTrue(actions.getGlobalActionHandler(ActionFactory.PASTE.getId()).isEnabled(), "Paste is offered after Copy");
+		actions.getGlobalActionHandler(ActionFactory.PASTE.getId()).run();
+		Ui.settle(300);
+		assertEquals(children + 1, nonPlaying.getChildren().size(), "pasted into nonPlaying");
+		Node pasted = nonPlaying.getChildren().get(children);
+		assertEquals("followBall", pasted.getName());
+		assertEquals("0.2.2.4.5", pasted.getLabel(), "the next label of nonPlaying");
+		assertTrue(editor.getModel().getTransitions().size() > transitions, "with its inner transitions");
+		List<String> labels = new ArrayList<>();
+		editor.getModel().eAllContents().forEachRemaining(each -> {
+			if (each instanceof Node node) {
+				labels.add(node.getLabel());
+			}
+		});
+		assertEquals(labels.size(), new java.util.HashSet<>(labels).size(), () -> "labels stay unique: " + labels);
+		assertEquals(pasted, editor.getViewer().getStructuredSelection().getFirstElement(), "the pasted state is selected");
+		Ui.screenshot("26-pasted-composite");
+		undo();
+		assertEquals(children, nonPlaying.getChildren().size(), "one undo takes the paste back");
+		assertEquals(transitions, editor.getModel().getTransitions().size());
 	}
 
 	/** The problem line of an expression field, as the section shows it. */

@@ -45,6 +45,7 @@ import org.eclipse.ui.part.EditorPart;
 import org.eclipse.ui.views.properties.IPropertySheetPage;
 import org.eclipse.ui.views.properties.tabbed.ITabbedPropertySheetPageContributor;
 import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
+import org.kse.labeling.Copies;
 import org.kse.model.NodeKind;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
@@ -83,6 +84,11 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	private Action redo;
 	private Action revert;
 	private Action delete;
+	private Action cut;
+	private Action copy;
+	private Action paste;
+	/** Copied states, shared by the statechart editors so that states can be pasted into another model. */
+	private static Copies.Fragment clipboard;
 	private final List<TabbedPropertySheetPage> sheets = new ArrayList<>();
 	private final IResourceChangeListener fileListener = this::fileChanged;
 	/** Set while this editor writes its file, so that its own save is not taken for a change on disk. */
@@ -136,10 +142,36 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			}
 		};
 		delete.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_DELETE);
+		copy = new Action("Copy") {
+			@Override
+			public void run() {
+				copySelection();
+			}
+		};
+		copy.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_COPY);
+		cut = new Action("Cut") {
+			@Override
+			public void run() {
+				if (copySelection()) {
+					execute(StructureEdits.delete(domain, model, selectedStates()));
+				}
+			}
+		};
+		cut.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_CUT);
+		paste = new Action("Paste") {
+			@Override
+			public void run() {
+				execute(StructureEdits.paste(domain, model, clipboard, selection().getFirstElement()));
+			}
+		};
+		paste.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_PASTE);
 		site.getActionBars().setGlobalActionHandler(ActionFactory.UNDO.getId(), undo);
 		site.getActionBars().setGlobalActionHandler(ActionFactory.REDO.getId(), redo);
 		site.getActionBars().setGlobalActionHandler(ActionFactory.REVERT.getId(), revert);
 		site.getActionBars().setGlobalActionHandler(ActionFactory.DELETE.getId(), delete);
+		site.getActionBars().setGlobalActionHandler(ActionFactory.CUT.getId(), cut);
+		site.getActionBars().setGlobalActionHandler(ActionFactory.COPY.getId(), copy);
+		site.getActionBars().setGlobalActionHandler(ActionFactory.PASTE.getId(), paste);
 		updateUndoRedo();
 	}
 
@@ -260,6 +292,9 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			transition.setEnabled(StructureEdits.newTransition(domain, model, selectedStates()).canExecute());
 			manager.add(transition);
 			manager.add(new Separator());
+			manager.add(cut);
+			manager.add(copy);
+			manager.add(paste);
 			manager.add(delete);
 			manager.add(new Separator(IWorkbenchActionConstants.MB_ADDITIONS));
 		});
@@ -267,8 +302,22 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		getEditorSite().registerContextMenu(ID, menu, viewer, false);
 	}
 
+	/** Copies the selected states (with what they hold, their inner transitions and variables); false when none is selected. */
+	private boolean copySelection() {
+		List<Node> states = selectedStates();
+		if (states.isEmpty()) {
+			return false;
+		}
+		clipboard = Copies.copy(model, states);
+		updateActions();
+		return true;
+	}
+
 	private void updateActions() {
 		delete.setEnabled(viewer != null && StructureEdits.delete(domain, model, selection().toList()).canExecute());
+		copy.setEnabled(!selectedStates().isEmpty());
+		cut.setEnabled(!selectedStates().isEmpty());
+		paste.setEnabled(clipboard != null);
 		revert.setEnabled(isDirty());
 	}
 

@@ -15,6 +15,7 @@ import org.eclipse.emf.edit.command.AddCommand;
 import org.eclipse.emf.edit.command.DeleteCommand;
 import org.eclipse.emf.edit.command.RemoveCommand;
 import org.eclipse.emf.edit.domain.EditingDomain;
+import org.kse.labeling.Copies;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -92,7 +93,7 @@ public final class StructureEdits {
 		Transition transition = StatechartFactory.eINSTANCE.createTransition();
 		transition.setSource(source);
 		transition.setTarget(target);
-		transition.setName(source.getLabel() + "_TO_" + target.getLabel());
+		transition.setName(source.getName() + "_TO_" + target.getName());
 		transition.setTE("");
 		return labelled(AddCommand.create(domain, model, Literals.MODEL__TRANSITIONS, transition), "New Transition");
 	}
@@ -154,6 +155,28 @@ public final class StructureEdits {
 			move.append(AddCommand.create(domain, owner, owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES, state));
 		}
 		return move;
+	}
+
+	/**
+	 * Pastes copied states into the selected composite state (or next to the selected state, or at
+	 * the top of the model), relabelled there, with their inner transitions and variables.
+	 */
+	public static Command paste(EditingDomain domain, Model model, Copies.Fragment fragment, Object selected) {
+		if (fragment == null) {
+			return UnexecutableCommand.INSTANCE;
+		}
+		EObject owner = owner(model, selected);
+		Copies.Pasted pasted = Copies.prepare(fragment, model, owner);
+		CompoundCommand paste = new CompoundCommand(CompoundCommand.LAST_COMMAND_ALL, "Paste");
+		if (!pasted.variables().isEmpty()) {
+			paste.append(AddCommand.create(domain, model, Literals.MODEL__VARIABLES, pasted.variables()));
+		}
+		if (!pasted.transitions().isEmpty()) {
+			paste.append(AddCommand.create(domain, model, Literals.MODEL__TRANSITIONS, pasted.transitions()));
+		}
+		// the states last: what a command affects is selected, and that should be the pasted states
+		paste.append(AddCommand.create(domain, owner, owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES, pasted.states()));
+		return paste;
 	}
 
 	private static Command labelled(Command command, String label) {
