@@ -2,9 +2,7 @@ package org.kse.benchmarks;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.URI;
@@ -43,45 +41,45 @@ public final class FoundationBenchmark {
 		System.out.printf(Locale.ROOT, "KSE foundation benchmark: %d activities in %d capabilities (%d lines, %d KiB of formulas), median of %d warm runs%n",
 				CAPABILITIES * ACTIVITIES_PER_CAPABILITY, CAPABILITIES, CAPABILITIES + 1, formulas.length() / 1024, RUNS);
 
-		double parse = median(() -> FormulaLoader.load(formulas, uri));
+		double parse = Timing.median(4, RUNS, () -> FormulaLoader.load(formulas, uri));
 		FormulaLoader.Result parsed = FormulaLoader.load(formulas, uri);
-		double build = median(() -> new FormulaToStatechart().transform(parsed.file(), "Bench"));
-		double transform = median(() -> FormulaTransformation.run(formulas, uri, "Bench"));
+		double build = Timing.median(4, RUNS, () -> new FormulaToStatechart().transform(parsed.file(), "Bench"));
+		double transform = Timing.median(4, RUNS, () -> FormulaTransformation.run(formulas, uri, "Bench"));
 		Model model = FormulaTransformation.run(formulas, uri, "Bench").model();
 		int[] counts = counts(model);
 		System.out.printf(Locale.ROOT, "model: %d states, %d transitions%n", counts[0], model.getTransitions().size());
-		report("parse+check formulas (baseline)", parse, 0);
-		report("build the statechart", build, parse);
-		report("transform (parse+check+build)", transform, parse);
+		Timing.report("parse+check formulas (baseline)", parse, 0);
+		Timing.report("build the statechart", build, parse);
+		Timing.report("transform (parse+check+build)", transform, parse);
 
-		double walk = median(() -> counts(model));
-		double validate = median(() -> ModelValidation.validate(model));
+		double walk = Timing.median(4, RUNS, () -> counts(model));
+		double validate = Timing.median(4, RUNS, () -> ModelValidation.validate(model));
 		Diagnostic diagnostic = ModelValidation.validate(model);
 		long errors = diagnostic.getChildren().stream().filter(d -> d.getSeverity() == Diagnostic.ERROR).count();
-		report("walk every element (baseline)", walk, 0);
-		report("validate", validate, walk);
+		Timing.report("walk every element (baseline)", walk, 0);
+		Timing.report("validate", validate, walk);
 		System.out.printf(Locale.ROOT, "  validation found %d errors%n", errors);
 
-		double label = median(() -> {
+		double label = Timing.median(4, RUNS, () -> {
 			Labeler.label(model);
 			return null;
 		});
-		report("label", label, walk);
+		Timing.report("label", label, walk);
 
 		StatechartResources.save(model, modelFile);
 		byte[] bytes = Files.readAllBytes(modelFile);
-		double copy = median(() -> {
+		double copy = Timing.median(4, RUNS, () -> {
 			Files.write(copyFile, Files.readAllBytes(modelFile));
 			return null;
 		});
-		double loadSave = median(() -> {
+		double loadSave = Timing.median(4, RUNS, () -> {
 			Model loaded = StatechartResources.load(modelFile);
 			StatechartResources.save(loaded, copyFile);
 			return null;
 		});
 		System.out.printf(Locale.ROOT, "file: %d KiB%n", bytes.length / 1024);
-		report("read+write the bytes (baseline)", copy, 0);
-		report("load+save the model", loadSave, copy);
+		Timing.report("read+write the bytes (baseline)", copy, 0);
+		Timing.report("load+save the model", loadSave, copy);
 
 		boolean goal = transform < 1000 && validate < 1000 && loadSave < 1000;
 		System.out.printf(Locale.ROOT, "goal (each under 1 s): %s%n", goal ? "met" : "NOT met");
@@ -118,29 +116,6 @@ public final class FoundationBenchmark {
 		return counts;
 	}
 
-	private static double median(Callable<?> work) throws Exception {
-		for (int i = 0; i < 4; i++) {
-			work.call();
-		}
-		double[] times = new double[RUNS];
-		for (int i = 0; i < RUNS; i++) {
-			long start = System.nanoTime();
-			work.call();
-			times[i] = (System.nanoTime() - start) / 1e6;
-		}
-		Arrays.sort(times);
-		return times[RUNS / 2];
-	}
-
-	private static void report(String what, double millis, double baseline) {
-		if (baseline > 0) {
-			System.out.printf(Locale.ROOT, "%-34s %9.1f ms  (%.2fx baseline)%n", what, millis, millis / baseline);
-		} else {
-			System.out.printf(Locale.ROOT, "%-34s %9.1f ms%n", what, millis);
-		}
-	}
-
 	private FoundationBenchmark() {
 	}
-
 }

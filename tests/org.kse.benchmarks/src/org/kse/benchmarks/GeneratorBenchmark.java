@@ -2,10 +2,8 @@ package org.kse.benchmarks;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 
 import org.eclipse.emf.common.util.URI;
@@ -60,7 +58,7 @@ public final class GeneratorBenchmark {
 		System.out.printf(Locale.ROOT, "output: %d files%n", report.written().size());
 
 		int[] run = { 0 };
-		double baseline = median(() -> {
+		double baseline = Timing.median(3, RUNS, () -> {
 			Path target = scratch.resolve("copy" + run[0]++);
 			for (Path file : report.written()) {
 				Files.createDirectories(target.resolve(file).getParent());
@@ -68,33 +66,14 @@ public final class GeneratorBenchmark {
 			}
 			return null;
 		});
-		double generate = median(() -> MonasGenerator.generate(model, scratch.resolve("gen" + run[0]++), MonasGenerator.Options.DEFAULT));
-		double regenerate = median(() -> MonasGenerator.generate(model, reference, MonasGenerator.Options.DEFAULT));
-		report("copy the files (baseline)", baseline, 0);
-		report("generate into an empty folder", generate, baseline);
-		report("regenerate, nothing changed", regenerate, baseline);
+		double generate = Timing.median(3, RUNS, () -> MonasGenerator.generate(model, scratch.resolve("gen" + run[0]++), MonasGenerator.Options.DEFAULT));
+		double regenerate = Timing.median(3, RUNS, () -> MonasGenerator.generate(model, reference, MonasGenerator.Options.DEFAULT));
+		Timing.report("copy the files (baseline)", baseline, 0);
+		Timing.report("generate into an empty folder", generate, baseline);
+		Timing.report("regenerate, nothing changed", regenerate, baseline);
 		try (Stream<Path> walk = Files.walk(scratch)) {
 			walk.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
 		}
-	}
-
-	private static double median(Callable<?> work) throws Exception {
-		for (int i = 0; i < 3; i++) {
-			work.call();
-		}
-		double[] times = new double[RUNS];
-		for (int i = 0; i < RUNS; i++) {
-			long start = System.nanoTime();
-			work.call();
-			times[i] = (System.nanoTime() - start) / 1e6;
-		}
-		Arrays.sort(times);
-		return times[RUNS / 2];
-	}
-
-	private static void report(String what, double millis, double baseline) {
-		System.out.printf(Locale.ROOT, baseline > 0 ? "%-34s %9.1f ms  (%.2fx baseline)%n" : "%-34s %9.1f ms%n", what, millis,
-				millis / baseline);
 	}
 
 	private GeneratorBenchmark() {

@@ -2,9 +2,7 @@ package org.kse.benchmarks;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import org.eclipse.emf.common.util.URI;
 import org.kse.model.StatechartResources;
@@ -34,11 +32,11 @@ public final class NotationBenchmark {
 		System.out.printf(Locale.ROOT, "KSE notation benchmark: %d states, %d transitions, %d levels deep; median of %d warm runs%n", states[0],
 				model.getTransitions().size(), depth(model), RUNS);
 
-		double load = median(() -> StatechartResources.load(file));
-		double open = median(() -> Arrange.all(StatechartResources.load(file)));
+		double load = Timing.median(3, RUNS, () -> StatechartResources.load(file));
+		double open = Timing.median(3, RUNS, () -> Arrange.all(StatechartResources.load(file)));
 		Notation notation = Arrange.all(StatechartResources.load(file));
-		System.out.printf(Locale.ROOT, "%-40s %9.1f ms%n", "load the model (baseline)", load);
-		System.out.printf(Locale.ROOT, "%-40s %9.1f ms  (%.1fx baseline)%n", "load and arrange every state (ELK)", open, open / load);
+		Timing.report("load the model (baseline)", load, 0);
+		Timing.report("load and arrange every state (ELK)", open, load);
 		System.out.printf(Locale.ROOT, "placed %d states; goal (open and lay out under 2 s): %s%n", notation.size(), open < 2000 ? "met" : "NOT met");
 		Files.deleteIfExists(file);
 		Files.deleteIfExists(directory);
@@ -71,19 +69,5 @@ public final class NotationBenchmark {
 			deepest[0] = Math.max(deepest[0], level);
 		});
 		return deepest[0];
-	}
-
-	private static double median(Callable<?> work) throws Exception {
-		for (int i = 0; i < 3; i++) {
-			work.call();
-		}
-		double[] times = new double[RUNS];
-		for (int i = 0; i < RUNS; i++) {
-			long start = System.nanoTime();
-			work.call();
-			times[i] = (System.nanoTime() - start) / 1e6;
-		}
-		Arrays.sort(times);
-		return times[RUNS / 2];
 	}
 }

@@ -129,10 +129,10 @@ final class Models {
 
 	// ------------------------------------------------------------------ looking into models
 
-	/** All states in document order (depth first). */
-	static List<Node> allNodes(Model model) {
+	/** The states in a model, or inside a state (not the state itself), in document order (depth first). */
+	static List<Node> allNodes(org.eclipse.emf.ecore.EObject root) {
 		List<Node> nodes = new ArrayList<>();
-		model.eAllContents().forEachRemaining(element -> {
+		root.eAllContents().forEachRemaining(element -> {
 			if (element instanceof Node node) {
 				nodes.add(node);
 			}
@@ -140,15 +140,10 @@ final class Models {
 		return nodes;
 	}
 
-	/** The states inside a state (not the state itself), depth first. */
-	static List<Node> allNodes(Node state) {
-		List<Node> nodes = new ArrayList<>();
-		state.eAllContents().forEachRemaining(element -> {
-			if (element instanceof Node node) {
-				nodes.add(node);
-			}
-		});
-		return nodes;
+	static Node byName(Model model, String name) {
+		List<Node> found = allNodes(model).stream().filter(node -> name.equals(node.getName())).toList();
+		assertTrue(found.size() == 1, () -> "expected one state named " + name + ", found " + found.size());
+		return found.get(0);
 	}
 
 	/** The state is the ancestor or inside it. */
@@ -159,12 +154,6 @@ final class Models {
 			}
 		}
 		return false;
-	}
-
-	static Node byName(Model model, String name) {
-		List<Node> found = allNodes(model).stream().filter(node -> name.equals(node.getName())).toList();
-		assertTrue(found.size() == 1, () -> "expected one state named " + name + ", found " + found.size());
-		return found.get(0);
 	}
 
 	static Node byLabel(Model model, String label) {

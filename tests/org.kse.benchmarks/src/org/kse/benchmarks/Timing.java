@@ -1,0 +1,36 @@
+package org.kse.benchmarks;
+
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+/** What the Java benchmarks share: the median of warm runs, and a result line with its ratio to a baseline. */
+final class Timing {
+
+	private Timing() {
+	}
+
+	/** Milliseconds: the median of {@code runs} runs after {@code warmups} unmeasured ones. */
+	static double median(int warmups, int runs, Callable<?> work) throws Exception {
+		for (int i = 0; i < warmups; i++) {
+			work.call();
+		}
+		double[] times = new double[runs];
+		for (int i = 0; i < runs; i++) {
+			long start = System.nanoTime();
+			work.call();
+			times[i] = (System.nanoTime() - start) / 1e6;
+		}
+		Arrays.sort(times);
+		return times[runs / 2];
+	}
+
+	/** A result line; with a baseline above 0, also the ratio to it. */
+	static void report(String what, double millis, double baseline) {
+		if (baseline > 0) {
+			System.out.printf(Locale.ROOT, "%-40s %9.1f ms  (%.2fx baseline)%n", what, millis, millis / baseline);
+		} else {
+			System.out.printf(Locale.ROOT, "%-40s %9.1f ms%n", what, millis);
+		}
+	}
+}
