@@ -1,0 +1,78 @@
+package org.kse.diagram.server;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import org.eclipse.emf.ecore.EClass;
+import org.eclipse.glsp.graph.DefaultTypes;
+import org.eclipse.glsp.graph.GraphExtension;
+import org.eclipse.glsp.graph.GraphPackage;
+import org.eclipse.glsp.server.diagram.DiagramConfiguration;
+import org.eclipse.glsp.server.types.EdgeTypeHint;
+import org.eclipse.glsp.server.types.ShapeTypeHint;
+import org.kse.model.NodeKind;
+
+/**
+ * What the client may do with which element: states move, resize, delete and go into composites
+ * (an AND state takes only OR regions); transitions run from any state but END to any but START.
+ */
+public class StatechartDiagramConfiguration implements DiagramConfiguration {
+
+	public static final String DIAGRAM_TYPE = "kse-statechart";
+
+	@Override
+	public String getDiagramType() {
+		return DIAGRAM_TYPE;
+	}
+
+	@Override
+	public Map<String, EClass> getTypeMappings() {
+		Map<String, EClass> mappings = new HashMap<>(DefaultTypes.getDefaultTypeMappings());
+		for (NodeKind kind : NodeKind.values()) {
+			mappings.put(StatechartGraph.type(kind), GraphPackage.Literals.GNODE);
+		}
+		mappings.put(StatechartGraph.TRANSITION, GraphPackage.Literals.GEDGE);
+		mappings.put(StatechartGraph.NAME, GraphPackage.Literals.GLABEL);
+		mappings.put(StatechartGraph.EXPRESSION, GraphPackage.Literals.GLABEL);
+		mappings.put(StatechartGraph.GRAPH, GraphPackage.Literals.GGRAPH);
+		return mappings;
+	}
+
+	@Override
+	public List<ShapeTypeHint> getShapeTypeHints() {
+		List<String> allStates = new ArrayList<>();
+		for (NodeKind kind : NodeKind.values()) {
+			allStates.add(StatechartGraph.type(kind));
+		}
+		List<ShapeTypeHint> hints = new ArrayList<>();
+		for (NodeKind kind : NodeKind.values()) {
+			List<String> containable = kind == NodeKind.OR ? allStates : kind == NodeKind.AND ? List.of(StatechartGraph.type(NodeKind.OR)) : List.of();
+			boolean resizable = kind == NodeKind.OR || kind == NodeKind.AND || kind == NodeKind.BASIC;
+			hints.add(new ShapeTypeHint(StatechartGraph.type(kind), true, true, resizable, true, containable));
+		}
+		return hints;
+	}
+
+	@Override
+	public List<EdgeTypeHint> getEdgeTypeHints() {
+		List<String> sources = new ArrayList<>();
+		List<String> targets = new ArrayList<>();
+		for (NodeKind kind : NodeKind.values()) {
+			if (kind != NodeKind.END) {
+				sources.add(StatechartGraph.type(kind));
+			}
+			if (kind != NodeKind.START) {
+				targets.add(StatechartGraph.type(kind));
+			}
+		}
+		return List.of(new EdgeTypeHint(StatechartGraph.TRANSITION, false, true, true, sources, targets));
+	}
+
+	@Override
+	public Optional<GraphExtension> getGraphExtension() {
+		return Optional.empty();
+	}
+}
