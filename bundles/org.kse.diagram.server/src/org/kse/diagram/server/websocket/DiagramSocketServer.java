@@ -1,0 +1,121 @@
+package org.kse.diagram.server.websocket;
+
+import java.net.URI;
+import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.Base64;
+import java.util.List;
+import java.util.regex.Pattern;
+
+import org.eclipse.glsp.server.di.ServerModule;
+import org.eclipse.jetty.ee10.servlet.ServletContextHandler;
+import org.eclipse.jetty.ee10.websocket.jakarta.server.config.JakartaWebSocketServletContainerInitializer;
+import org.eclipse.jetty.server.Server;
+import org.eclipse.jetty.server.ServerConnector;
+import org.kse.diagram.server.StatechartDiagramModule;
+
+import com.google.inject.Guice;
+import com.google.inject.Injector;
+
+import jakarta.websocket.Extension;
+import jakarta.websocket.HandshakeResponse;
+import jakarta.websocket.server.HandshakeRequest;
+import jakarta.websocket.server.ServerEndpointConfig;
+
+/**
+ * The diagram server on a WebSocket: listens on 127.0.0.1 only, serves the statecharts of one
+ * folder, and accepts only connections that present this server's random session token.
+ */
+public final class DiagramSocketServer implements AutoCloseable {
+
+	public static final String PATH = "/kse";
+
+	private final Server jetty;
+	private final String token;
+
+	private DiagramSocketServer(Server jetty, String token) {
+		this.jetty = jetty;
+		this.token = token;
+	}
+
+	/** Starts serving {@code folder} on a loopback port ({@code 0}: any free one). */
+	public static DiagramSocketServer start(Path folder, int port) throws Exception {
+		byte[] random = new byte[32];
+		new SecureRandom().nextBytes(random);
+		String token = Base64.getUrlEncoder().withoutPadding().encodeToString(random);
+		Injector injector = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder)));
+		Server jetty = new Server();
+		ServerConnector connector = new ServerConnector(jetty);
+		connector.setHost("127.0.0.1");
+		connector.setPort(port);
+		jetty.addConnector(connector);
+		ServletContextHandler context = new ServletContextHandler();
+		context.setContextPath("/");
+		jetty.setHandler(context);
+		JakartaWebSocketServletContainerInitializer.configure(context, (servletContext, container) -> container
+				.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injector, token)).build()));
+		jetty.start();
+		return new DiagramSocketServer(jetty, token);
+	}
+
+	/**
+	 * Makes each connection's endpoint and answers the handshake questions itself: the Jakarta
+	 * default configurator is found through {@link java.util.ServiceLoader}, which does not see
+	 * across OSGi bundles and fails the handshake with an HTTP 500.
+	 */
+	private static final class EndpointConfigurator extends ServerEndpointConfig.Configurator {
+		private final Injector injector;
+		private final String token;
+
+		EndpointConfigurator(Injector injector, String token) {
+			this.injector = injector;
+			this.token = token;
+		}
+
+		@Override
+		public <T> T getEndpointInstance(Class<T> endpointClass) {
+			return endpointClass.cast(new DiagramEndpoint(injector, token));
+		}
+
+		@Override
+		public boolean checkOrigin(String origin) {
+			// browsers send the page's origin; only pages served from this machine may connect
+			return origin == null || origin.isEmpty() || origin.equals("null") || LOCAL_ORIGIN.matcher(origin).matches();
+		}
+
+		@Override
+		public String getNegotiatedSubprotocol(List<String> supported, List<String> requested) {
+			return "";
+		}
+
+		@Override
+		public List<Extension> getNegotiatedExtensions(List<Extension> installed, List<Extension> requested) {
+			return List.of();
+		}
+
+		@Override
+		public void modifyHandshake(ServerEndpointConfig config, HandshakeRequest request, HandshakeResponse response) {
+			// nothing to add: the token travels in the query and is checked when the endpoint opens
+		}
+	}
+
+	private static final Pattern LOCAL_ORIGIN = Pattern.compile("(https?|file)://(127\\.0\\.0\\.1|localhost|\\[::1\\])(:\\d+)?");
+
+	public int port() {
+		return ((ServerConnector) jetty.getConnectors()[0]).getLocalPort();
+	}
+
+	public String token() {
+		return token;
+	}
+
+	/** Where a client connects, token included. */
+	public URI uri() {
+		return URI.create("ws://127.0.0.1:" + port() + PATH + "?token=" + token);
+	}
+
+	@Override
+	public void close() throws Exception {
+		jetty.stop();
+	}
+}
