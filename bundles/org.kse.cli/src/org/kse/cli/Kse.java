@@ -48,6 +48,8 @@ public final class Kse {
 			                      write the Monas C++ of a model into a source tree
 			  diagram <model.stct> [-o diagram.svg] [--arrange] [--save-notation]
 			                      draw the statechart as an SVG picture
+			  serve <folder> [--port N]
+			                      edit the folder's statecharts as diagrams in a local browser
 			  help [command]      show help
 			  version             show the versions of KSE and of what it runs on
 
@@ -104,6 +106,17 @@ public final class Kse {
 			  --arrange           arrange every state anew with ELK
 			  --save-notation     write the positions used to <Model>.notation.json""";
 
+	private static final String SERVE_HELP = """
+			usage: kse serve <folder> [--port N] [--pages DIR]
+
+			Serves the statecharts in the folder (and its subfolders) to the diagram editor in
+			a browser on this machine, until stopped with Ctrl+C. Prints the address of each
+			model's page. The server listens on 127.0.0.1 only, every connection must present
+			the random token in the address, and only .stct files inside the folder can be opened.
+			Positions are saved beside each model in <Model>.notation.json.
+			  --port N            the port to listen on (default: any free port)
+			  --pages DIR         serve the editor's page from DIR instead of the built-in one""";
+
 	private final PrintStream out;
 	private final PrintStream err;
 	private boolean quiet;
@@ -126,6 +139,7 @@ public final class Kse {
 				case "label" -> label(rest);
 				case "generate" -> generate(rest);
 				case "diagram" -> diagram(rest);
+				case "serve" -> serve(rest);
 				case "help", "-h", "--help" -> help(rest);
 				case "version", "--version" -> version();
 				default -> usage("unknown command '" + args[0] + "'");
@@ -146,6 +160,7 @@ public final class Kse {
 			case "label" -> LABEL_HELP;
 			case "generate" -> GENERATE_HELP;
 			case "diagram" -> DIAGRAM_HELP;
+			case "serve" -> SERVE_HELP;
 			default -> USAGE;
 		});
 		return OK;
@@ -295,6 +310,64 @@ public final class Kse {
 		}
 		StatechartResources.writeAtomically(picture, org.kse.notation.SvgDiagram.render(model, notation).getBytes(StandardCharsets.UTF_8));
 		out.println("drew " + picture + " (" + statistics(model) + "; positions " + from + ")");
+		return OK;
+	}
+
+	private int serve(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("--port", "--pages"), List.of());
+		if (options.help) {
+			out.println(SERVE_HELP);
+			return OK;
+		}
+		Path folder = options.single("folder");
+		if (!Files.isDirectory(folder)) {
+			throw new NoSuchFileException(folder + " (not a folder)");
+		}
+		int port = 0;
+		String portOption = options.value("--port");
+		if (portOption != null) {
+			try {
+				port = Integer.parseInt(portOption);
+			} catch (NumberFormatException e) {
+				throw new UsageException("--port takes a number, not '" + portOption + "'");
+			}
+		}
+		String pagesOption = options.value("--pages");
+		java.net.URL pages = pagesOption != null ? Path.of(pagesOption).toAbsolutePath().toUri().toURL() : org.kse.diagram.server.websocket.DiagramPages.builtIn();
+		if (pages == null) {
+			err.println("kse: the diagram editor's page is not installed (bundle org.kse.diagram.client); use --pages DIR");
+			return FAILED;
+		}
+		org.kse.diagram.server.websocket.DiagramSocketServer server;
+		try {
+			server = org.kse.diagram.server.websocket.DiagramSocketServer.start(folder, port, pages);
+		} catch (IOException e) {
+			throw e;
+		} catch (Exception e) {
+			err.println("kse: cannot start the diagram server on port " + port + ": " + e.getMessage());
+			return FAILED;
+		}
+		java.util.concurrent.CountDownLatch stopped = new java.util.concurrent.CountDownLatch(1);
+		Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+			try {
+				server.close();
+			} catch (Exception e) {
+				// the process ends anyway
+			}
+			stopped.countDown();
+		}, "kse serve shutdown"));
+		List<String> models = server.models();
+		out.println("serving " + models.size() + " statechart" + (models.size() == 1 ? "" : "s") + " of " + folder.toAbsolutePath().normalize()
+				+ " on 127.0.0.1:" + server.port() + " (stop with Ctrl+C)");
+		for (String model : models) {
+			out.println("  " + server.page(model));
+		}
+		out.flush();
+		try {
+			stopped.await();
+		} catch (InterruptedException e) {
+			Thread.currentThread().interrupt();
+		}
 		return OK;
 	}
 

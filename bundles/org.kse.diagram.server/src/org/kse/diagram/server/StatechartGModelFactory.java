@@ -1,10 +1,14 @@
 package org.kse.diagram.server;
 
+import java.util.HashMap;
+import java.util.Map;
+
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.glsp.server.features.core.model.GModelFactory;
 
 import com.google.inject.Inject;
 
-/** Builds the session's graph from its statechart and notation (again after every change). */
+/** Builds the session's graph from its statechart and layout (again after every change). */
 public class StatechartGModelFactory implements GModelFactory {
 
 	@Inject
@@ -12,6 +16,8 @@ public class StatechartGModelFactory implements GModelFactory {
 
 	@Override
 	public void createGModel() {
-		state.updateRoot(StatechartGraph.of(state.getModel(), state.getNotation()));
+		Map<String, EObject> ids = new HashMap<>();
+		state.updateRoot(StatechartGraph.of(state.getModel(), state.getLayout()::get, ids));
+		state.index(ids);
 	}
 }

@@ -1,6 +1,10 @@
 package org.kse.diagram.server;
 
 import java.util.Locale;
+import java.util.Map;
+import java.util.function.Function;
+
+import org.eclipse.emf.ecore.EObject;
 
 import org.eclipse.glsp.graph.GEdge;
 import org.eclipse.glsp.graph.GGraph;
@@ -42,27 +46,38 @@ public final class StatechartGraph {
 		return STATE + (kind == null ? "unknown" : kind.name().toLowerCase(Locale.ROOT));
 	}
 
+	/** The id of the graph's root, which stands for the model. */
+	public static final String ROOT = "statechart";
+
 	public static GGraph of(Model model, Notation notation) {
-		GGraphBuilder graph = new GGraphBuilder(GRAPH).id("statechart");
+		return of(model, node -> {
+			Bounds placed = notation.get(node);
+			return placed != null ? placed : Shapes.size(node);
+		}, new java.util.HashMap<>());
+	}
+
+	/** The graph of the model with states where {@code bounds} says; {@code ids} receives the element of each id. */
+	public static GGraph of(Model model, Function<Node, Bounds> bounds, Map<String, EObject> ids) {
+		GGraphBuilder graph = new GGraphBuilder(GRAPH).id(ROOT);
+		ids.put(ROOT, model);
 		for (Node root : model.getNodes()) {
-			graph.add(state(root, notation));
+			graph.add(state(root, bounds, ids));
 		}
 		for (int i = 0; i < model.getTransitions().size(); i++) {
 			Transition transition = model.getTransitions().get(i);
 			if (transition.getSource() != null && transition.getTarget() != null) {
 				graph.add(transition(transition, i));
+				ids.put("//@transitions." + i, transition);
 			}
 		}
 		return graph.build();
 	}
 
-	private static GNode state(Node node, Notation notation) {
+	private static GNode state(Node node, Function<Node, Bounds> placement, Map<String, EObject> ids) {
 		NodeKind kind = NodeKind.of(node);
-		Bounds bounds = notation.get(node);
-		if (bounds == null) {
-			bounds = Shapes.size(node);
-		}
+		Bounds bounds = placement.apply(node);
 		String id = Notation.path(node);
+		ids.put(id, node);
 		GNodeBuilder shape = new GNodeBuilder(type(kind)).id(id).position(bounds.x(), bounds.y()).size(bounds.width(), bounds.height())
 				.addCssClass("kse-" + (kind == null ? "unknown" : kind.name().toLowerCase(Locale.ROOT)))
 				.addArgument("label", node.getLabel() == null ? "" : node.getLabel());
@@ -78,7 +93,7 @@ public final class StatechartGraph {
 			shape.add(name.build());
 		}
 		for (Node child : node.getChildren()) {
-			shape.add(state(child, notation));
+			shape.add(state(child, placement, ids));
 		}
 		return shape.build();
 	}

@@ -7,7 +7,9 @@ import org.eclipse.glsp.server.actions.SaveModelAction;
 import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.features.core.model.SourceModelStorage;
 import org.eclipse.glsp.server.types.GLSPServerException;
+import org.eclipse.emf.edit.domain.EditingDomain;
 import org.kse.model.StatechartResources;
+import org.kse.model.edit.StatechartEdits;
 import org.kse.model.statechart.Model;
 import org.kse.notation.NotationFiles;
 
@@ -34,9 +36,10 @@ public class StatechartStorage implements SourceModelStorage {
 			throw new GLSPServerException(e.getMessage(), e);
 		}
 		try {
-			Model model = StatechartResources.load(file);
+			EditingDomain domain = StatechartEdits.newDomain();
+			Model model = StatechartResources.load(domain.getResourceSet(), file);
 			NotationFiles.Opened opened = NotationFiles.open(file, model);
-			state.open(file, model, opened.notation());
+			state.open(file, model, domain, DiagramLayout.of(model, opened.notation()));
 		} catch (IOException e) {
 			throw new GLSPServerException("cannot open " + folder.root().relativize(file) + ": " + e.getMessage(), e);
 		}
@@ -46,7 +49,7 @@ public class StatechartStorage implements SourceModelStorage {
 	public void saveSourceModel(SaveModelAction action) {
 		try {
 			StatechartResources.save(state.getModel(), state.getFile());
-			NotationFiles.write(state.getFile(), state.getModel(), state.getNotation());
+			NotationFiles.write(state.getFile(), state.getModel(), state.getLayout().toNotation(state.getModel()));
 			state.saveIsDone();
 		} catch (IOException e) {
 			throw new GLSPServerException("cannot save " + state.getFile().getFileName() + ": " + e.getMessage(), e);

@@ -129,7 +129,7 @@ class DiagramSocketTest {
 		String initialized = client.awaitContaining("\"result\"");
 		assertTrue(initialized.contains("protocolVersion") && initialized.matches(".*\"id\":\"?1\"?[,}].*"), "initialized: " + initialized);
 		socket.sendText("{\"jsonrpc\":\"2.0\",\"id\":2,\"method\":\"initializeClientSession\",\"params\":{\"clientSessionId\":\"s\","
-				+ "\"diagramType\":\"kse-statechart\",\"clientActionKinds\":[\"requestBounds\",\"setModel\",\"updateModel\",\"message\",\"status\"]}}", true);
+				+ "\"diagramType\":\"kse-statechart\",\"clientActionKinds\":[\"requestBounds\",\"setModel\",\"updateModel\",\"message\",\"status\",\"setDirtyState\",\"setMarkers\"]}}", true);
 		assertTrue(client.awaitContaining("\"result\"").matches(".*\"id\":\"?2\"?[,}].*"), "session initialized");
 		socket.sendText("{\"jsonrpc\":\"2.0\",\"method\":\"process\",\"params\":{\"clientId\":\"s\",\"action\":{\"kind\":\"requestModel\","
 				+ "\"options\":{\"sourceUri\":\"Goalie.stct\"}}}}", true);

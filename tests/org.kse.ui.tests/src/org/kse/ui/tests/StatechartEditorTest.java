@@ -42,7 +42,7 @@ import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 import org.kse.model.statechart.Variable;
 import org.kse.ui.model.editor.StatechartEditor;
-import org.kse.ui.model.editor.StructureEdits;
+import org.kse.model.edit.StatechartEdits;
 import org.kse.ui.model.editor.properties.ModelSection;
 import org.kse.ui.model.editor.properties.StateSection;
 import org.kse.ui.model.editor.properties.TransitionSection;
@@ -251,7 +251,7 @@ class StatechartEditorTest {
 		Ui.screenshot("24-state-added");
 
 		Node kick = state("Kick");
-		editor.execute(StructureEdits.newTransition(editor.getEditingDomain(), editor.getModel(), List.of(kick, added)));
+		editor.execute(StatechartEdits.newTransition(editor.getEditingDomain(), editor.getModel(), List.of(kick, added)));
 		Transition link = editor.getModel().getTransitions().get(editor.getModel().getTransitions().size() - 1);
 		assertEquals(kick, link.getSource());
 		assertEquals(added, link.getTarget());
@@ -275,9 +275,9 @@ class StatechartEditorTest {
 	void aStateIsMovedIntoAnotherAndNeverIntoItself() throws Exception {
 		Node special = state("SpecialAction");
 		Node nonPlaying = state("nonPlaying");
-		var move = StructureEdits.move(editor.getEditingDomain(), editor.getModel(), List.of(nonPlaying), state("NoPlay"));
+		var move = StatechartEdits.move(editor.getEditingDomain(), editor.getModel(), List.of(nonPlaying), state("NoPlay"));
 		assertFalse(move.canExecute(), "not into a state inside itself");
-		editor.execute(StructureEdits.move(editor.getEditingDomain(), editor.getModel(), List.of(special), nonPlaying));
+		editor.execute(StatechartEdits.move(editor.getEditingDomain(), editor.getModel(), List.of(special), nonPlaying));
 		assertEquals(nonPlaying, special.eContainer(), "moved");
 		Ui.settle(200);
 		undo();
@@ -286,7 +286,7 @@ class StatechartEditorTest {
 
 	@Test
 	void revertGoesBackToTheFileAndAChangeOnDiskIsReloaded() throws Exception {
-		editor.execute(StructureEdits.delete(editor.getEditingDomain(), editor.getModel(), List.of(state("Scan"))));
+		editor.execute(StatechartEdits.delete(editor.getEditingDomain(), editor.getModel(), List.of(state("Scan"))));
 		assertTrue(editor.isDirty());
 		var revert = editor.getEditorSite().getActionBars().getGlobalActionHandler(ActionFactory.REVERT.getId());
 		Ui.settle(200);

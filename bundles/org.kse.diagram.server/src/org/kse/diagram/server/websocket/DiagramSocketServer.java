@@ -1,6 +1,7 @@
 package org.kse.diagram.server.websocket;
 
 import java.net.URI;
+import java.net.URL;
 import java.nio.file.Path;
 import java.security.SecureRandom;
 import java.util.Base64;
@@ -9,9 +10,11 @@ import java.util.regex.Pattern;
 
 import org.eclipse.glsp.server.di.ServerModule;
 import org.eclipse.jetty.ee10.servlet.ServletContextHandler;
+import org.eclipse.jetty.ee10.servlet.ServletHolder;
 import org.eclipse.jetty.ee10.websocket.jakarta.server.config.JakartaWebSocketServletContainerInitializer;
 import org.eclipse.jetty.server.Server;
 import org.eclipse.jetty.server.ServerConnector;
+import org.kse.diagram.server.ServedFolder;
 import org.kse.diagram.server.StatechartDiagramModule;
 
 import com.google.inject.Guice;
@@ -33,13 +36,24 @@ public final class DiagramSocketServer implements AutoCloseable {
 	private final Server jetty;
 	private final String token;
 
-	private DiagramSocketServer(Server jetty, String token) {
+	private final ServedFolder served;
+
+	private DiagramSocketServer(Server jetty, String token, ServedFolder served) {
 		this.jetty = jetty;
 		this.token = token;
+		this.served = served;
 	}
 
-	/** Starts serving {@code folder} on a loopback port ({@code 0}: any free one). */
+	/** Starts serving {@code folder} on a loopback port ({@code 0}: any free one), without the client's page. */
 	public static DiagramSocketServer start(Path folder, int port) throws Exception {
+		return start(folder, port, null);
+	}
+
+	/**
+	 * Starts serving {@code folder} on a loopback port ({@code 0}: any free one), and the diagram
+	 * client's page from {@code pages} (a folder URL ending in {@code /}) when it is not null.
+	 */
+	public static DiagramSocketServer start(Path folder, int port, URL pages) throws Exception {
 		byte[] random = new byte[32];
 		new SecureRandom().nextBytes(random);
 		String token = Base64.getUrlEncoder().withoutPadding().encodeToString(random);
@@ -52,10 +66,15 @@ public final class DiagramSocketServer implements AutoCloseable {
 		ServletContextHandler context = new ServletContextHandler();
 		context.setContextPath("/");
 		jetty.setHandler(context);
+		ServedFolder served = new ServedFolder(folder);
+		context.addServlet(new ServletHolder(new ModelListServlet(served, token)), "/models");
+		if (pages != null) {
+			context.addServlet(new ServletHolder(new PageServlet(pages)), "/*");
+		}
 		JakartaWebSocketServletContainerInitializer.configure(context, (servletContext, container) -> container
 				.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injector, token)).build()));
 		jetty.start();
-		return new DiagramSocketServer(jetty, token);
+		return new DiagramSocketServer(jetty, token, served);
 	}
 
 	/**
@@ -107,6 +126,16 @@ public final class DiagramSocketServer implements AutoCloseable {
 
 	public String token() {
 		return token;
+	}
+
+	/** The page that edits this model (a path relative to the served folder), token included. */
+	public URI page(String model) {
+		return URI.create("http://127.0.0.1:" + port() + "/?token=" + token + "&model=" + java.net.URLEncoder.encode(model, java.nio.charset.StandardCharsets.UTF_8));
+	}
+
+	/** The statecharts in the served folder, relative to it. */
+	public java.util.List<String> models() throws java.io.IOException {
+		return ModelListServlet.models(served);
 	}
 
 	/** Where a client connects, token included. */

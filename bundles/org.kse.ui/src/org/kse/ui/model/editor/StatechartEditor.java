@@ -1,5 +1,6 @@
 package org.kse.ui.model.editor;
 
+import org.kse.model.edit.StatechartEdits;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -22,8 +23,6 @@ import org.eclipse.emf.edit.domain.AdapterFactoryEditingDomain;
 import org.eclipse.emf.edit.domain.EditingDomain;
 import org.eclipse.emf.edit.domain.IEditingDomainProvider;
 import org.eclipse.emf.edit.provider.ComposedAdapterFactory;
-import org.eclipse.emf.edit.provider.ReflectiveItemProviderAdapterFactory;
-import org.eclipse.emf.edit.provider.resource.ResourceItemProviderAdapterFactory;
 import org.eclipse.jface.action.Action;
 import org.eclipse.jface.action.MenuManager;
 import org.eclipse.jface.action.Separator;
@@ -101,11 +100,9 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		setSite(site);
 		setInput(input);
 		setPartName(input.getName());
-		adapterFactory = new ComposedAdapterFactory(ComposedAdapterFactory.Descriptor.Registry.INSTANCE);
-		adapterFactory.addAdapterFactory(new ResourceItemProviderAdapterFactory());
-		adapterFactory.addAdapterFactory(new ReflectiveItemProviderAdapterFactory());
-		BasicCommandStack stack = new BasicCommandStack();
-		domain = new AdapterFactoryEditingDomain(adapterFactory, stack);
+		domain = StatechartEdits.newDomain();
+		adapterFactory = (ComposedAdapterFactory) domain.getAdapterFactory();
+		BasicCommandStack stack = (BasicCommandStack) domain.getCommandStack();
 		IFile file = getFile();
 		if (file == null) {
 			throw new PartInitException("the statechart editor opens files of the workspace");
@@ -138,7 +135,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		delete = new Action("Delete") {
 			@Override
 			public void run() {
-				execute(StructureEdits.delete(domain, model, selection().toList()));
+				execute(StatechartEdits.delete(domain, model, selection().toList()));
 			}
 		};
 		delete.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_DELETE);
@@ -153,7 +150,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			@Override
 			public void run() {
 				if (copySelection()) {
-					execute(StructureEdits.delete(domain, model, selectedStates()));
+					execute(StatechartEdits.delete(domain, model, selectedStates()));
 				}
 			}
 		};
@@ -161,7 +158,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		paste = new Action("Paste") {
 			@Override
 			public void run() {
-				execute(StructureEdits.paste(domain, model, clipboard, selection().getFirstElement()));
+				execute(StatechartEdits.paste(domain, model, clipboard, selection().getFirstElement()));
 			}
 		};
 		paste.setActionDefinitionId(IWorkbenchCommandConstants.EDIT_PASTE);
@@ -278,7 +275,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 				states.add(new Action(kind.name()) {
 					@Override
 					public void run() {
-						execute(StructureEdits.newState(domain, model, first, kind));
+						execute(StatechartEdits.newState(domain, model, first, kind));
 					}
 				});
 			}
@@ -286,10 +283,10 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			Action transition = new Action(selectedStates().size() == 2 ? "New Transition (first to second state)" : "New Transition (self-loop)") {
 				@Override
 				public void run() {
-					execute(StructureEdits.newTransition(domain, model, selectedStates()));
+					execute(StatechartEdits.newTransition(domain, model, selectedStates()));
 				}
 			};
-			transition.setEnabled(StructureEdits.newTransition(domain, model, selectedStates()).canExecute());
+			transition.setEnabled(StatechartEdits.newTransition(domain, model, selectedStates()).canExecute());
 			manager.add(transition);
 			manager.add(new Separator());
 			manager.add(cut);
@@ -314,7 +311,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	}
 
 	private void updateActions() {
-		delete.setEnabled(viewer != null && StructureEdits.delete(domain, model, selection().toList()).canExecute());
+		delete.setEnabled(viewer != null && StatechartEdits.delete(domain, model, selection().toList()).canExecute());
 		copy.setEnabled(!selectedStates().isEmpty());
 		cut.setEnabled(!selectedStates().isEmpty());
 		paste.setEnabled(clipboard != null);

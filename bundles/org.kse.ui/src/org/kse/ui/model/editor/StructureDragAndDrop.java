@@ -1,5 +1,6 @@
 package org.kse.ui.model.editor;
 
+import org.kse.model.edit.StatechartEdits;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -51,7 +52,7 @@ final class StructureDragAndDrop {
 			private org.eclipse.emf.common.command.Command move(Object target) {
 				var dragged = LocalSelectionTransfer.getTransfer().getSelection();
 				List<Node> states = dragged instanceof IStructuredSelection structured ? states(structured) : List.of();
-				return StructureEdits.move(editor.getEditingDomain(), editor.getModel(), states, target);
+				return StatechartEdits.move(editor.getEditingDomain(), editor.getModel(), states, target);
 			}
 		});
 	}

@@ -1,4 +1,4 @@
-package org.kse.ui.model.editor;
+package org.kse.model.edit;
 
 import java.util.ArrayList;
 import java.util.Collection;
@@ -14,7 +14,12 @@ import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.edit.command.AddCommand;
 import org.eclipse.emf.edit.command.DeleteCommand;
 import org.eclipse.emf.edit.command.RemoveCommand;
+import org.eclipse.emf.common.command.BasicCommandStack;
+import org.eclipse.emf.edit.domain.AdapterFactoryEditingDomain;
 import org.eclipse.emf.edit.domain.EditingDomain;
+import org.eclipse.emf.edit.provider.ComposedAdapterFactory;
+import org.eclipse.emf.edit.provider.ReflectiveItemProviderAdapterFactory;
+import org.eclipse.emf.edit.provider.resource.ResourceItemProviderAdapterFactory;
 import org.kse.labeling.Copies;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Model;
@@ -24,13 +29,21 @@ import org.kse.model.statechart.StatechartPackage.Literals;
 import org.kse.model.statechart.Transition;
 
 /**
- * The structure edits of the statechart editor as commands: add a state or a transition, delete
+ * The structure edits of statecharts as commands, shared by the tree and diagram editors: add a state or a transition, delete
  * states with what they hold and every transition that touches them, move states into another
  * state. Each is one command, so one Undo takes it back whole.
  */
-public final class StructureEdits {
+public final class StatechartEdits {
 
-	private StructureEdits() {
+	/** An editing domain for statecharts: reflective item providers and a command stack of its own. */
+	public static AdapterFactoryEditingDomain newDomain() {
+		ComposedAdapterFactory adapters = new ComposedAdapterFactory(ComposedAdapterFactory.Descriptor.Registry.INSTANCE);
+		adapters.addAdapterFactory(new ResourceItemProviderAdapterFactory());
+		adapters.addAdapterFactory(new ReflectiveItemProviderAdapterFactory());
+		return new AdapterFactoryEditingDomain(adapters, new BasicCommandStack());
+	}
+
+	private StatechartEdits() {
 	}
 
 	/**
@@ -40,6 +53,15 @@ public final class StructureEdits {
 	 */
 	public static Command newState(EditingDomain domain, Model model, Object selected, NodeKind kind) {
 		EObject owner = owner(model, selected);
+		return labelled(add(domain, model, owner, createState(model, owner, kind)), "New " + kind.name() + " State");
+	}
+
+	/**
+	 * A new state of the given kind for {@code owner} (a state, or the model for a top-level
+	 * state), not yet added: it has the next free label of the owner's children; a BASIC state is
+	 * called NewActivity (NewActivity2, … when taken), the others by their label.
+	 */
+	public static Node createState(Model model, EObject owner, NodeKind kind) {
 		List<Node> siblings = owner instanceof Node parent ? parent.getChildren() : model.getNodes();
 		Node state = StatechartFactory.eINSTANCE.createNode();
 		state.setType(kind.name());
@@ -59,9 +81,32 @@ public final class StructureEdits {
 		} else {
 			state.setName(state.getLabel());
 		}
+		return state;
+	}
+
+	/** Adds a state to {@code owner}: a state's children, or the model's top-level states. */
+	public static Command add(EditingDomain domain, Model model, EObject owner, Node state) {
 		EReference feature = owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES;
-		Command add = AddCommand.create(domain, owner, feature, state);
-		return labelled(add, "New " + kind.name() + " State");
+		return AddCommand.create(domain, owner instanceof Node ? owner : model, feature, state);
+	}
+
+	/**
+	 * Why a state of this kind cannot go into {@code owner} (a state, or the model), or null when
+	 * it can: an AND state holds only OR regions, and only OR and AND states (and the top of the
+	 * model) hold states at all.
+	 */
+	public static String refusal(EObject owner, NodeKind kind) {
+		if (!(owner instanceof Node parent)) {
+			return null;
+		}
+		NodeKind parentKind = NodeKind.of(parent);
+		if (parentKind == NodeKind.AND) {
+			return kind == NodeKind.OR ? null : "an AND state holds only OR regions, not " + kind.name() + " states";
+		}
+		if (parentKind == NodeKind.OR) {
+			return null;
+		}
+		return "a " + (parentKind == null ? parent.getType() : parentKind.name()) + " state cannot hold other states";
 	}
 
 	private static EObject owner(Model model, Object selected) {
@@ -88,8 +133,11 @@ public final class StructureEdits {
 		if (selected.isEmpty() || selected.size() > 2) {
 			return UnexecutableCommand.INSTANCE;
 		}
-		Node source = selected.get(0);
-		Node target = selected.get(selected.size() - 1);
+		return newTransition(domain, model, selected.get(0), selected.get(selected.size() - 1));
+	}
+
+	/** A transition with an empty expression, named after its states as Label names it. */
+	public static Command newTransition(EditingDomain domain, Model model, Node source, Node target) {
 		Transition transition = StatechartFactory.eINSTANCE.createTransition();
 		transition.setSource(source);
 		transition.setTarget(target);
@@ -162,11 +210,20 @@ public final class StructureEdits {
 	 * the top of the model), relabelled there, with their inner transitions and variables.
 	 */
 	public static Command paste(EditingDomain domain, Model model, Copies.Fragment fragment, Object selected) {
+		return pasteInto(domain, model, fragment, owner(model, selected));
+	}
+
+	/** Pastes copied states into {@code owner} (a state, or the model for top-level states). */
+	public static Command pasteInto(EditingDomain domain, Model model, Copies.Fragment fragment, EObject owner) {
 		if (fragment == null) {
 			return UnexecutableCommand.INSTANCE;
 		}
-		EObject owner = owner(model, selected);
-		Copies.Pasted pasted = Copies.prepare(fragment, model, owner);
+		return paste(domain, model, Copies.prepare(fragment, model, owner));
+	}
+
+	/** Adds what {@link Copies#prepare} made for one paste: the states to their container, their transitions and new variables to the model. */
+	public static Command paste(EditingDomain domain, Model model, Copies.Pasted pasted) {
+		EObject owner = pasted.container();
 		CompoundCommand paste = new CompoundCommand(CompoundCommand.LAST_COMMAND_ALL, "Paste");
 		if (!pasted.variables().isEmpty()) {
 			paste.append(AddCommand.create(domain, model, Literals.MODEL__VARIABLES, pasted.variables()));
@@ -175,7 +232,8 @@ public final class StructureEdits {
 			paste.append(AddCommand.create(domain, model, Literals.MODEL__TRANSITIONS, pasted.transitions()));
 		}
 		// the states last: what a command affects is selected, and that should be the pasted states
-		paste.append(AddCommand.create(domain, owner, owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES, pasted.states()));
+		paste.append(AddCommand.create(domain, owner instanceof Node ? owner : model, owner instanceof Node ? Literals.NODE__CHILDREN : Literals.MODEL__NODES,
+				pasted.states()));
 		return paste;
 	}
 

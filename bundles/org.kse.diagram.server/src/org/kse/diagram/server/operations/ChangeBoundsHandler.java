@@ -1,0 +1,30 @@
+package org.kse.diagram.server.operations;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+import org.eclipse.emf.common.command.Command;
+import org.eclipse.glsp.server.operations.ChangeBoundsOperation;
+import org.eclipse.glsp.server.types.ElementAndBounds;
+import org.kse.diagram.server.BoundsCommand;
+import org.kse.model.statechart.Node;
+import org.kse.notation.Bounds;
+
+/** Moved and resized states (positions relative to their parent state). */
+public class ChangeBoundsHandler extends StatechartOperationHandler<ChangeBoundsOperation> {
+
+	@Override
+	protected Command command(ChangeBoundsOperation operation) {
+		Map<Node, Bounds> moved = new LinkedHashMap<>();
+		for (ElementAndBounds each : operation.getNewBounds()) {
+			Node node = state(each.getElementId());
+			Bounds old = state.getLayout().get(node);
+			double x = each.getNewPosition() == null ? old.x() : each.getNewPosition().getX();
+			double y = each.getNewPosition() == null ? old.y() : each.getNewPosition().getY();
+			double width = each.getNewSize() == null ? old.width() : Math.max(8, each.getNewSize().getWidth());
+			double height = each.getNewSize() == null ? old.height() : Math.max(8, each.getNewSize().getHeight());
+			moved.put(node, new Bounds(x, y, width, height));
+		}
+		return moved.isEmpty() ? null : new BoundsCommand(moved.size() == 1 ? "Move State" : "Move States", state.getLayout(), moved);
+	}
+}

@@ -1,0 +1,34 @@
+package org.kse.diagram.server.operations;
+
+import org.eclipse.emf.common.command.Command;
+import org.eclipse.emf.edit.command.SetCommand;
+import org.eclipse.glsp.server.features.directediting.ApplyLabelEditOperation;
+import org.kse.model.NodeKind;
+import org.kse.model.statechart.Node;
+import org.kse.model.statechart.StatechartPackage.Literals;
+import org.kse.model.statechart.Transition;
+
+/**
+ * A name or an expression edited in place. The label of a transition shows the first line of its
+ * expression, so the edit replaces that line and keeps the others.
+ */
+public class LabelEditHandler extends StatechartOperationHandler<ApplyLabelEditOperation> {
+
+	@Override
+	protected Command command(ApplyLabelEditOperation operation) {
+		String problem = LabelEdits.problem(state, operation.getLabelId(), operation.getText());
+		if (problem != null) {
+			throw refused(problem);
+		}
+		Object element = element(operation.getLabelId());
+		if (element instanceof Node node) {
+			if (NodeKind.CONDITION.is(node) || operation.getText().strip().equals(node.getName())) {
+				return null;
+			}
+			return SetCommand.create(state.getDomain(), node, Literals.NODE__NAME, operation.getText().strip());
+		}
+		Transition transition = (Transition) element;
+		String expression = LabelEdits.withFirstLine(transition.getTE(), operation.getText());
+		return expression.equals(transition.getTE()) ? null : SetCommand.create(state.getDomain(), transition, Literals.TRANSITION__TE, expression);
+	}
+}

@@ -1,0 +1,69 @@
+package org.kse.diagram.server.operations;
+
+import java.lang.reflect.ParameterizedType;
+import java.util.Optional;
+
+import org.eclipse.emf.common.command.Command;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.glsp.server.operations.Operation;
+import org.eclipse.glsp.server.operations.OperationHandler;
+import org.eclipse.glsp.server.types.GLSPServerException;
+import org.kse.diagram.server.StatechartModelState;
+import org.kse.model.statechart.Node;
+
+import com.google.inject.Inject;
+
+/**
+ * An edit of the diagram as one command on the model's command stack. An edit the statechart
+ * rules forbid is refused with a message that names the elements, and nothing changes.
+ */
+abstract class StatechartOperationHandler<O extends Operation> implements OperationHandler<O> {
+
+	@Inject
+	protected StatechartModelState state;
+
+	@Override
+	@SuppressWarnings("unchecked")
+	public Class<O> getHandledOperationType() {
+		return (Class<O>) ((ParameterizedType) getClass().getGenericSuperclass()).getActualTypeArguments()[0];
+	}
+
+	@Override
+	public Optional<Command> createCommand(O operation) {
+		Command command = command(operation);
+		if (command == null) {
+			return Optional.empty();
+		}
+		if (!command.canExecute()) {
+			throw refused("the edit cannot be applied here");
+		}
+		return Optional.of(command);
+	}
+
+	/** The command of the operation, or null when it changes nothing. */
+	protected abstract Command command(O operation);
+
+	protected EObject element(String id) {
+		EObject element = state.element(id);
+		if (element == null) {
+			throw refused("the diagram has no element " + id + " (it may have been removed meanwhile)");
+		}
+		return element;
+	}
+
+	protected Node state(String id) {
+		if (element(id) instanceof Node node) {
+			return node;
+		}
+		throw refused(id + " is not a state");
+	}
+
+	protected static GLSPServerException refused(String message) {
+		return new GLSPServerException(message);
+	}
+
+	/** A state as the user knows it: "label (name)". */
+	protected static String describe(Node node) {
+		return node.getLabel() + " (" + node.getName() + ")";
+	}
+}

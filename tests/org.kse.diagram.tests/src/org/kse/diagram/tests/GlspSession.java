@@ -1,0 +1,130 @@
+package org.kse.diagram.tests;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+
+import org.eclipse.glsp.graph.GGraph;
+import org.eclipse.glsp.server.actions.Action;
+import org.eclipse.glsp.server.actions.ActionMessage;
+import org.eclipse.glsp.server.actions.MessageAction;
+import org.eclipse.glsp.server.di.ServerModule;
+import org.eclipse.glsp.server.features.core.model.ComputedBoundsAction;
+import org.eclipse.glsp.server.features.core.model.RequestBoundsAction;
+import org.eclipse.glsp.server.features.core.model.RequestModelAction;
+import org.eclipse.glsp.server.protocol.GLSPServer;
+import org.eclipse.glsp.server.protocol.InitializeClientSessionParameters;
+import org.eclipse.glsp.server.protocol.InitializeParameters;
+import org.kse.diagram.server.StatechartDiagramConfiguration;
+import org.kse.diagram.server.StatechartDiagramModule;
+
+import com.google.inject.Guice;
+
+/**
+ * A GLSP client session with the diagram server, in-process: sends actions as the browser client
+ * would and waits for what the server sends back. Each edit is answered with the new graph.
+ */
+final class GlspSession implements AutoCloseable {
+
+	static final String ID = "session";
+
+	private final GLSPServer server;
+	final List<ActionMessage> received = new CopyOnWriteArrayList<>();
+
+	GlspSession(Path folder) throws Exception {
+		server = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder))).getInstance(GLSPServer.class);
+		server.connect(message -> {
+			received.add(message);
+			// as the browser client does: measure the new graph and hand it back, which makes it the model
+			if (message.getAction() instanceof RequestBoundsAction request) {
+				server.process(new ActionMessage(ID, new ComputedBoundsAction(List.of(), List.of(), List.of(), request.getNewRoot().getRevision())));
+			}
+		});
+		InitializeParameters parameters = new InitializeParameters();
+		parameters.setApplicationId("kse-tests");
+		parameters.setProtocolVersion("1.0.0");
+		server.initialize(parameters).get(10, TimeUnit.SECONDS);
+		server.initializeClientSession(new InitializeClientSessionParameters(ID, StatechartDiagramConfiguration.DIAGRAM_TYPE,
+				List.of("setModel", "requestBounds", "updateModel", "message", "status", "setDirtyState", "setMarkers", "setClipboardData",
+						"setPopupModel", "setEditValidationResult"))).get(10, TimeUnit.SECONDS);
+	}
+
+	void send(Action action) {
+		server.process(new ActionMessage(ID, action));
+	}
+
+	/** Opens a model of the served folder and returns its graph. */
+	GGraph open(String model) throws InterruptedException {
+		return graphAfter(new RequestModelAction(Map.of("sourceUri", model)));
+	}
+
+	/** Sends the action and returns the graph the server sends next (an edit's result). */
+	GGraph graphAfter(Action action) throws InterruptedException {
+		int before = count(RequestBoundsAction.class);
+		send(action);
+		long end = System.currentTimeMillis() + 15_000;
+		while (System.currentTimeMillis() < end) {
+			List<RequestBoundsAction> graphs = all(RequestBoundsAction.class);
+			if (graphs.size() > before) {
+				return (GGraph) graphs.get(graphs.size() - 1).getNewRoot();
+			}
+			Thread.sleep(10);
+		}
+		throw new AssertionError("no new graph after " + action.getKind() + "; received " + kinds());
+	}
+
+	/** Sends an edit the server should refuse and returns the message the client is shown. */
+	String refusal(Action action) throws InterruptedException {
+		int before = all(MessageAction.class).size();
+		int graphs = count(RequestBoundsAction.class);
+		send(action);
+		long end = System.currentTimeMillis() + 10_000;
+		while (System.currentTimeMillis() < end) {
+			List<MessageAction> messages = all(MessageAction.class);
+			if (messages.size() > before) {
+				Thread.sleep(100);
+				if (count(RequestBoundsAction.class) != graphs) {
+					throw new AssertionError("the refused edit changed the diagram");
+				}
+				MessageAction message = messages.get(messages.size() - 1);
+				return message.getSeverity() + ": " + message.getMessage() + " " + message.getDetails().orElse("");
+			}
+			Thread.sleep(10);
+		}
+		throw new AssertionError("no message after " + action.getKind() + "; received " + kinds());
+	}
+
+	/** The latest action of the type that arrives within 10 s after {@code after} of them had arrived. */
+	<T extends Action> T next(Class<T> type, int after) throws InterruptedException {
+		long end = System.currentTimeMillis() + 10_000;
+		while (System.currentTimeMillis() < end) {
+			List<T> all = all(type);
+			if (all.size() > after) {
+				return all.get(all.size() - 1);
+			}
+			Thread.sleep(10);
+		}
+		throw new AssertionError("no " + type.getSimpleName() + "; received " + kinds());
+	}
+
+	int count(Class<? extends Action> type) {
+		return all(type).size();
+	}
+
+	<T extends Action> List<T> all(Class<T> type) {
+		return received.stream().map(ActionMessage::getAction).filter(type::isInstance).map(type::cast).toList();
+	}
+
+	String kinds() {
+		return received.stream().map(message -> message.getAction() instanceof MessageAction shown
+				? "message(" + shown.getSeverity() + ": " + shown.getMessage() + " " + shown.getDetails().orElse("") + ")"
+				: message.getAction().getKind()).toList().toString();
+	}
+
+	@Override
+	public void close() {
+		server.shutdown();
+	}
+}
