@@ -13,4 +13,5 @@ fi
 classpath="$(ls "$plugins"/*.jar | tr '\n' ':')$classes"
 exec "$java_home/bin/java" -Xss16m -Xmx2g --sun-misc-unsafe-memory-access=allow \
   -Dlog4j.configuration="file:$here/releng/log4j.properties" \
+  -Dlog4j2.configurationFile="file:$here/releng/log4j2.properties" \
   -cp "$classpath" "$1"

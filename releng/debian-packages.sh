@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the C++ side builds on and the workbench's tests run with (GTK,
-# WebKitGTK for the help window and the diagram, Xvfb, ImageMagick for screenshots), when
-# missing (as root, or through sudo). Used by test.sh and `kse demo`.
+# Installs the Debian packages the C++ side builds on and the tests run with (GTK, WebKitGTK for
+# the help window and the diagram, Xvfb, ImageMagick for screenshots, Chromium for the diagram's
+# end-to-end tests), when missing (as root, or through sudo). Used by test.sh and `kse demo`.
 set -euo pipefail
 packages="g++ cmake ninja-build libprotobuf-dev protobuf-compiler libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth x11-utils libgtk-3-0 libwebkit2gtk-4.1-0 imagemagick unzip"
+  xvfb xauth x11-utils libgtk-3-0 libwebkit2gtk-4.1-0 imagemagick unzip chromium"
 missing=""
 for package in $packages; do
   dpkg -s "$package" >/dev/null 2>&1 || missing="$missing $package"

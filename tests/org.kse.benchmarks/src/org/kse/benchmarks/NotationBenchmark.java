@@ -44,14 +44,19 @@ public final class NotationBenchmark {
 
 	/** A choice of capabilities, each a choice of repeated activities: nested OR states, as behaviours are. */
 	static String formulas() {
+		return formulas(CAPABILITIES, ACTIVITIES_PER_CAPABILITY);
+	}
+
+	/** {@code capabilities} × {@code activities} repeated activities: about 4 states each. */
+	static String formulas(int capabilities, int activities) {
 		StringBuilder out = new StringBuilder("Layout\nlayout = Init.(");
-		for (int c = 0; c < CAPABILITIES; c++) {
+		for (int c = 0; c < capabilities; c++) {
 			out.append(c == 0 ? "" : " | ").append("cap").append(c);
 		}
 		out.append(")+\n");
-		for (int c = 0; c < CAPABILITIES; c++) {
+		for (int c = 0; c < capabilities; c++) {
 			out.append("cap").append(c).append(" = ");
-			for (int a = 0; a < ACTIVITIES_PER_CAPABILITY; a++) {
+			for (int a = 0; a < activities; a++) {
 				out.append(a == 0 ? "" : " | ").append("Act").append(c).append('_').append(a).append('+');
 			}
 			out.append('\n');

@@ -12,6 +12,11 @@ final class Timing {
 
 	/** Milliseconds: the median of {@code runs} runs after {@code warmups} unmeasured ones. */
 	static double median(int warmups, int runs, Callable<?> work) throws Exception {
+		return percentile(sample(warmups, runs, work), 50);
+	}
+
+	/** Milliseconds of {@code runs} runs after {@code warmups} unmeasured ones, sorted. */
+	static double[] sample(int warmups, int runs, Callable<?> work) throws Exception {
 		for (int i = 0; i < warmups; i++) {
 			work.call();
 		}
@@ -22,7 +27,13 @@ final class Timing {
 			times[i] = (System.nanoTime() - start) / 1e6;
 		}
 		Arrays.sort(times);
-		return times[runs / 2];
+		return times;
+	}
+
+	/** The value below which {@code percent} % of the sorted times lie (nearest rank). */
+	static double percentile(double[] sorted, int percent) {
+		int rank = (int) Math.ceil(percent / 100.0 * sorted.length);
+		return sorted[Math.max(0, Math.min(sorted.length - 1, rank - 1))];
 	}
 
 	/** A result line; with a baseline above 0, also the ratio to it. */

@@ -15,6 +15,7 @@ import org.eclipse.glsp.server.operations.OperationHandler;
 import org.kse.diagram.server.operations.ArrangeHandler;
 import org.kse.diagram.server.operations.ChangeBoundsHandler;
 import org.kse.diagram.server.operations.ChangeContainerHandler;
+import org.kse.diagram.server.operations.RoutingPointsHandler;
 import org.kse.diagram.server.operations.ClipboardDataHandler;
 import org.kse.diagram.server.operations.CreateStateHandler;
 import org.kse.diagram.server.operations.CreateTransitionHandler;
@@ -42,6 +43,7 @@ public class StatechartDiagramModule extends DiagramModule {
 		super.configureBase();
 		bind(ServedFolder.class).toInstance(folder);
 		bind(StatechartModelState.class).in(com.google.inject.Singleton.class);
+		bind(org.eclipse.glsp.server.features.core.model.ModelSubmissionHandler.class).to(StatechartSubmissions.class).in(com.google.inject.Singleton.class);
 	}
 
 	@Override
@@ -104,6 +106,7 @@ public class StatechartDiagramModule extends DiagramModule {
 		bindings.add(CreateTransitionHandler.class);
 		bindings.add(ChangeBoundsHandler.class);
 		bindings.add(ChangeContainerHandler.class);
+		bindings.add(RoutingPointsHandler.class);
 		bindings.add(DeleteHandler.class);
 		bindings.add(LabelEditHandler.class);
 		bindings.add(ArrangeHandler.class);

@@ -22,6 +22,7 @@ import org.eclipse.emf.edit.provider.ReflectiveItemProviderAdapterFactory;
 import org.eclipse.emf.edit.provider.resource.ResourceItemProviderAdapterFactory;
 import org.kse.labeling.Copies;
 import org.kse.model.NodeKind;
+import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.StatechartFactory;
@@ -35,12 +36,12 @@ import org.kse.model.statechart.Transition;
  */
 public final class StatechartEdits {
 
-	/** An editing domain for statecharts: reflective item providers and a command stack of its own. */
+	/** An editing domain for statecharts: reflective item providers, a command stack and a resource set of its own (that reads .stct files in and out of OSGi). */
 	public static AdapterFactoryEditingDomain newDomain() {
 		ComposedAdapterFactory adapters = new ComposedAdapterFactory(ComposedAdapterFactory.Descriptor.Registry.INSTANCE);
 		adapters.addAdapterFactory(new ResourceItemProviderAdapterFactory());
 		adapters.addAdapterFactory(new ReflectiveItemProviderAdapterFactory());
-		return new AdapterFactoryEditingDomain(adapters, new BasicCommandStack());
+		return new AdapterFactoryEditingDomain(adapters, new BasicCommandStack(), StatechartResources.newResourceSet());
 	}
 
 	private StatechartEdits() {

@@ -28,6 +28,8 @@ import org.eclipse.glsp.server.features.undoredo.UndoAction;
 import org.eclipse.glsp.server.features.validation.SetMarkersAction;
 import org.eclipse.glsp.server.operations.ChangeBoundsOperation;
 import org.eclipse.glsp.server.operations.ChangeContainerOperation;
+import org.eclipse.glsp.server.operations.ChangeRoutingPointsOperation;
+import org.eclipse.glsp.server.operations.CompoundOperation;
 import org.eclipse.glsp.server.operations.CreateEdgeOperation;
 import org.eclipse.glsp.server.operations.CreateNodeOperation;
 import org.eclipse.glsp.server.operations.DeleteOperation;
@@ -35,6 +37,7 @@ import org.eclipse.glsp.server.operations.LayoutOperation;
 import org.eclipse.glsp.server.operations.PasteOperation;
 import org.eclipse.glsp.server.types.EditorContext;
 import org.eclipse.glsp.server.types.ElementAndBounds;
+import org.eclipse.glsp.server.types.ElementAndRoutingPoints;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -107,6 +110,7 @@ class DiagramEditingTest {
 		GNode or = node(graph, "//@nodes.1");
 		assertEquals("state:or", or.getType());
 		assertEquals(900, or.getPosition().getX(), 0.1);
+		assertTrue(or.getSize().getWidth() >= 240 && or.getSize().getHeight() >= 160, "a new OR state has room for states: " + or.getSize());
 		graph = session.graphAfter(create("state:start", "//@nodes.1", 920, 90));
 		graph = session.graphAfter(create("state:basic", "//@nodes.1", 980, 90));
 		GNode start = node(graph, "//@nodes.1/@Children.0");
@@ -146,7 +150,13 @@ class DiagramEditingTest {
 		moved.setElementId(id);
 		moved.setNewPosition(GraphUtil.point(x + 140, 77));
 		moved.setNewSize(GraphUtil.dimension(node(graph, id).getSize().getWidth(), node(graph, id).getSize().getHeight()));
-		graph = session.graphAfter(new ChangeBoundsOperation(List.of(moved)));
+		// as a browser sends a move: the bounds with the attached transitions' routes, undone as one
+		ElementAndRoutingPoints route = new ElementAndRoutingPoints();
+		route.setElementId("//@transitions.0");
+		route.setNewRoutingPoints(List.of());
+		CompoundOperation move = new CompoundOperation();
+		move.setOperationList(List.of(new ChangeBoundsOperation(List.of(moved)), new ChangeRoutingPointsOperation(List.of(route))));
+		graph = session.graphAfter(move);
 		assertEquals(x + 140, node(graph, id).getPosition().getX(), 0.1);
 		graph = session.graphAfter(new UndoAction());
 		assertEquals(x, node(graph, id).getPosition().getX(), 0.1, "undone");
@@ -210,6 +220,14 @@ class DiagramEditingTest {
 		Model edited = saved();
 		assertEquals("ScanField", edited.getNodes().get(0).getChildren().get(1).getChildren().get(1).getChildren().get(2).getChildren().get(2).getChildren().get(1).getName());
 		assertEquals(other, edited.getTransitions().get(guarded == 0 ? 1 : 0).getTE().strip());
+		// a guard broken over two lines is edited whole, not line by line
+		int multiLine = 0;
+		while (edited.getTransitions().get(multiLine).getTE() == null || !edited.getTransitions().get(multiLine).getTE().strip().contains("\n")) {
+			multiLine++;
+		}
+		String rejoined = edited.getTransitions().get(multiLine).getTE().strip().replace("\n", " ").replace("==0", "==1");
+		session.graphAfter(new ApplyLabelEditOperation("//@transitions." + multiLine + "#expression", rejoined));
+		assertEquals(rejoined, saved().getTransitions().get(multiLine).getTE());
 	}
 
 	@Test

@@ -137,4 +137,20 @@ class DiagramSocketTest {
 		assertTrue(model.contains("state:basic") && model.contains("//@transitions.0"), "the Goalie's graph: " + model.substring(0, Math.min(300, model.length())));
 		socket.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
 	}
+
+	@Test
+	void twoTabsAreServedSideBySide() throws Exception {
+		Client first = new Client();
+		Client second = new Client();
+		WebSocket one = connect(server.uri(), first);
+		WebSocket two = connect(server.uri(), second);
+		// each tab is a client application of its own, with its own initialize
+		one.sendText("{\"jsonrpc\":\"2.0\",\"id\":1,\"method\":\"initialize\",\"params\":{\"applicationId\":\"tab-1\",\"protocolVersion\":\"1.0.0\"}}", true);
+		two.sendText("{\"jsonrpc\":\"2.0\",\"id\":1,\"method\":\"initialize\",\"params\":{\"applicationId\":\"tab-2\",\"protocolVersion\":\"1.0.0\"}}", true);
+		assertTrue(first.awaitContaining("\"id\"").contains("\"result\""), "the first tab is initialized");
+		String answer = second.awaitContaining("\"id\"");
+		assertTrue(answer.contains("\"result\""), "the second tab is initialized as well: " + answer);
+		one.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
+		two.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
+	}
 }

@@ -19,6 +19,9 @@ import org.kse.notation.Shapes;
 /** A new state from the palette, where it was dropped: only into a container that may hold it. */
 public class CreateStateHandler extends StatechartOperationHandler<CreateNodeOperation> implements CreateOperationHandler<CreateNodeOperation> {
 
+	static final double NEW_COMPOSITE_WIDTH = 240;
+	static final double NEW_COMPOSITE_HEIGHT = 160;
+
 	@Override
 	public List<String> getHandledElementTypeIds() {
 		List<String> types = new ArrayList<>();
@@ -46,6 +49,10 @@ public class CreateStateHandler extends StatechartOperationHandler<CreateNodeOpe
 		}
 		Node created = StatechartEdits.createState(state.getModel(), owner, kind);
 		Bounds size = Shapes.size(created);
+		if (kind == NodeKind.OR || kind == NodeKind.AND) {
+			// an empty composite is drawn to be filled: room for a few states and their arrows
+			size = new Bounds(0, 0, Math.max(NEW_COMPOSITE_WIDTH, size.width()), NEW_COMPOSITE_HEIGHT);
+		}
 		double[] origin = state.getLayout().absolute(owner);
 		double x = operation.getLocation().map(point -> point.getX() - origin[0]).orElse(20.0);
 		double y = operation.getLocation().map(point -> point.getY() - origin[1]).orElse(40.0);

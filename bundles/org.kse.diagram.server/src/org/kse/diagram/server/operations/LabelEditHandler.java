@@ -9,8 +9,9 @@ import org.kse.model.statechart.StatechartPackage.Literals;
 import org.kse.model.statechart.Transition;
 
 /**
- * A name or an expression edited in place. The label of a transition shows the first line of its
- * expression, so the edit replaces that line and keeps the others.
+ * A name or an expression edited in place. A transition's label shows only the first line of its
+ * expression, but a line break may fall anywhere inside a guard, so the editor opens on the whole
+ * expression and the edit replaces it whole.
  */
 public class LabelEditHandler extends StatechartOperationHandler<ApplyLabelEditOperation> {
 
@@ -28,7 +29,7 @@ public class LabelEditHandler extends StatechartOperationHandler<ApplyLabelEditO
 			return SetCommand.create(state.getDomain(), node, Literals.NODE__NAME, operation.getText().strip());
 		}
 		Transition transition = (Transition) element;
-		String expression = LabelEdits.withFirstLine(transition.getTE(), operation.getText());
-		return expression.equals(transition.getTE()) ? null : SetCommand.create(state.getDomain(), transition, Literals.TRANSITION__TE, expression);
+		String expression = operation.getText().strip();
+		return expression.equals(transition.getTE() == null ? "" : transition.getTE().strip()) ? null : SetCommand.create(state.getDomain(), transition, Literals.TRANSITION__TE, expression);
 	}
 }

@@ -53,18 +53,10 @@ public class LabelEdits implements LabelEditValidator {
 			}
 			return null;
 		}
-		if (element instanceof Transition transition) {
-			List<ExpressionChecks.Problem> problems = ExpressionChecks.check(withFirstLine(transition.getTE(), text), CATALOG);
+		if (element instanceof Transition) {
+			List<ExpressionChecks.Problem> problems = ExpressionChecks.check(text.strip(), CATALOG);
 			return problems.stream().filter(ExpressionChecks.Problem::error).findFirst().map(ExpressionChecks.Problem::toString).orElse(null);
 		}
 		return labelId + " is not a name or an expression";
-	}
-
-	/** The expression with its first line replaced by the edited text. */
-	static String withFirstLine(String expression, String firstLine) {
-		String old = expression == null ? "" : expression.strip();
-		int end = old.indexOf('\n');
-		String edited = firstLine.strip().replaceFirst("\\s*…$", "");
-		return end < 0 ? edited : edited + old.substring(end);
 	}
 }

@@ -4,6 +4,7 @@ import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.util.Collection;
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.logging.Logger;
 
 import org.eclipse.glsp.server.gson.ServerGsonConfigurator;
@@ -31,12 +32,12 @@ public final class DiagramEndpoint extends WebSocketEndpoint<GLSPClient> {
 
 	private static final Logger LOG = Logger.getLogger(DiagramEndpoint.class.getName());
 
-	private final Injector injector;
+	private final Supplier<Injector> injectors;
 	private final byte[] token;
 	private GLSPServer server;
 
-	DiagramEndpoint(Injector injector, String token) {
-		this.injector = injector;
+	DiagramEndpoint(Supplier<Injector> injectors, String token) {
+		this.injectors = injectors;
 		this.token = token.getBytes(StandardCharsets.UTF_8);
 	}
 
@@ -90,6 +91,8 @@ public final class DiagramEndpoint extends WebSocketEndpoint<GLSPClient> {
 
 	@Override
 	protected void configure(Launcher.Builder<GLSPClient> builder) {
+		// made only once the token is checked
+		Injector injector = injectors.get();
 		server = injector.getInstance(GLSPServer.class);
 		ServerGsonConfigurator gson = injector.getInstance(ServerGsonConfigurator.class);
 		builder.setLocalService(server).setRemoteInterface(GLSPClient.class).configureGson(gson::configureGsonBuilder);

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.security.SecureRandom;
 import java.util.Base64;
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.regex.Pattern;
 
 import org.eclipse.glsp.server.di.ServerModule;
@@ -57,7 +58,9 @@ public final class DiagramSocketServer implements AutoCloseable {
 		byte[] random = new byte[32];
 		new SecureRandom().nextBytes(random);
 		String token = Base64.getUrlEncoder().withoutPadding().encodeToString(random);
-		Injector injector = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder)));
+		// GLSP binds its server as a singleton that serves one client application: every
+		// connection (a second tab, a second window) gets an injector of its own
+		Supplier<Injector> injectors = () -> Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder)));
 		Server jetty = new Server();
 		ServerConnector connector = new ServerConnector(jetty);
 		connector.setHost("127.0.0.1");
@@ -72,7 +75,7 @@ public final class DiagramSocketServer implements AutoCloseable {
 			context.addServlet(new ServletHolder(new PageServlet(pages)), "/*");
 		}
 		JakartaWebSocketServletContainerInitializer.configure(context, (servletContext, container) -> container
-				.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injector, token)).build()));
+				.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injectors, token)).build()));
 		jetty.start();
 		return new DiagramSocketServer(jetty, token, served);
 	}
@@ -83,17 +86,17 @@ public final class DiagramSocketServer implements AutoCloseable {
 	 * across OSGi bundles and fails the handshake with an HTTP 500.
 	 */
 	private static final class EndpointConfigurator extends ServerEndpointConfig.Configurator {
-		private final Injector injector;
+		private final Supplier<Injector> injectors;
 		private final String token;
 
-		EndpointConfigurator(Injector injector, String token) {
-			this.injector = injector;
+		EndpointConfigurator(Supplier<Injector> injectors, String token) {
+			this.injectors = injectors;
 			this.token = token;
 		}
 
 		@Override
 		public <T> T getEndpointInstance(Class<T> endpointClass) {
-			return endpointClass.cast(new DiagramEndpoint(injector, token));
+			return endpointClass.cast(new DiagramEndpoint(injectors, token));
 		}
 
 		@Override

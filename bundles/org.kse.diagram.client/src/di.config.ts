@@ -1,0 +1,107 @@
+/*
+ * The dependency injection container of the diagram: GLSP's default and standalone modules (select,
+ * move, resize, delete, palette, label editing, undo/redo keys, copy/paste, zoom/scroll, grid,
+ * helper lines, markers, hover popups, SVG export) plus the statechart's model elements and views.
+ */
+import {
+    ConsoleLogger,
+    ExportSvgAction,
+    ExportSvgKeyListener,
+    FeatureModule,
+    GlspEditLabelUI,
+    GLSPModelSource,
+    GlspHoverMouseListener,
+    IDiagramOptions,
+    LogLevel,
+    MessageAction,
+    STANDALONE_MODULES,
+    ShowGridAction,
+    StatusAction,
+    TYPES,
+    ViewerOptions,
+    alignFeature,
+    bindAsService,
+    bindOrRebind,
+    configureActionHandler,
+    configureDefaultModelElements,
+    configureModelElement,
+    createDiagramOptionsModule,
+    editLabelFeature,
+    gridModule,
+    helperLineModule,
+    initializeDiagramContainer,
+    standaloneExportModule,
+    statusModule
+} from '@eclipse-glsp/client';
+import { Container } from 'inversify';
+import { KseExportSvgActionHandler } from './export';
+import { KseHoverMouseListener } from './hover';
+import { KseEditLabelUI } from './label-editing';
+import { KseModelSource } from './model-source';
+import {
+    BasicStateNode,
+    EXPRESSION_LABEL,
+    ExpressionLabel,
+    NAME_LABEL,
+    NameLabel,
+    STATE_KINDS,
+    STATE_PREFIX,
+    StateNode,
+    TRANSITION,
+    TransitionEdge
+} from './model';
+import { StatusLineHandler } from './status-line';
+import { GridButtonSync } from './toolbar-sync';
+import { ExpressionLabelView, NameLabelView, StateView, TransitionView } from './views';
+
+export const kseDiagramModule = new FeatureModule(
+    (bind, unbind, isBound, rebind) => {
+        const context = { bind, unbind, isBound, rebind };
+        bindOrRebind(context, TYPES.ILogger).to(ConsoleLogger).inSingletonScope();
+        bindOrRebind(context, TYPES.LogLevel).toConstantValue(LogLevel.warn);
+
+        configureDefaultModelElements(context);
+        for (const kind of STATE_KINDS) {
+            configureModelElement(context, STATE_PREFIX + kind, kind === 'basic' ? BasicStateNode : StateNode, StateView);
+        }
+        configureModelElement(context, NAME_LABEL, NameLabel, NameLabelView, { enable: [editLabelFeature], disable: [alignFeature] });
+        configureModelElement(context, EXPRESSION_LABEL, ExpressionLabel, ExpressionLabelView, { enable: [editLabelFeature] });
+        configureModelElement(context, TRANSITION, TransitionEdge, TransitionView);
+
+        // the page's status line shows GLSP's status and messages (instead of the overlay in the diagram)
+        bind(StatusLineHandler).toSelf().inSingletonScope();
+        configureActionHandler(context, StatusAction.KIND, StatusLineHandler);
+        configureActionHandler(context, MessageAction.KIND, StatusLineHandler);
+
+        // the toolbar's Grid button follows the grid (which the tool palette can switch too)
+        bind(GridButtonSync).toSelf().inSingletonScope();
+        configureActionHandler(context, ShowGridAction.KIND, GridButtonSync);
+
+        // SVG export: saved as <model>.svg; Ctrl+Shift+E exports too
+        bind(KseExportSvgActionHandler).toSelf().inSingletonScope();
+        configureActionHandler(context, ExportSvgAction.KIND, KseExportSvgActionHandler);
+        bindAsService(context, TYPES.KeyListener, ExportSvgKeyListener);
+
+        // expressions are edited whole, in a text area
+        rebind(GlspEditLabelUI).to(KseEditLabelUI).inSingletonScope();
+
+        // compound operations carry only what the server handles
+        rebind(GLSPModelSource).to(KseModelSource).inSingletonScope();
+
+        // popups of transitions open at the mouse
+        rebind(GlspHoverMouseListener).to(KseHoverMouseListener).inSingletonScope();
+    },
+    { featureId: Symbol('kseDiagram') }
+);
+
+export function createKseDiagramContainer(options: IDiagramOptions, viewerOptions?: Partial<ViewerOptions>): Container {
+    const standalone = STANDALONE_MODULES.filter(module => module !== standaloneExportModule);
+    return initializeDiagramContainer(
+        new Container(),
+        createDiagramOptionsModule(options, viewerOptions),
+        helperLineModule,
+        gridModule,
+        kseDiagramModule,
+        { add: standalone, remove: statusModule }
+    );
+}

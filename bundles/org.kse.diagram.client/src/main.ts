@@ -1,0 +1,324 @@
+/*
+ * The KSE statechart diagram page. Opened as http://127.0.0.1:<port>/?token=<token>&model=<file>,
+ * it connects to the GLSP server of the same host (ws://<host>/kse?token=<token>), opens the model
+ * and wires the toolbar, the status line and the `window.kse` handle used by tests and hosts.
+ */
+import 'reflect-metadata';
+
+import {
+    Action,
+    BaseJsonrpcGLSPClient,
+    DiagramLoader,
+    EditorContextService,
+    FitToScreenAction,
+    GLSPActionDispatcher,
+    GLSPClient,
+    GModelRoot,
+    IGridManager,
+    LayoutOperation,
+    RedoAction,
+    RequestExportSvgAction,
+    SaveModelAction,
+    SetViewportAction,
+    TYPES,
+    UndoAction,
+    createWebSocketConnection,
+    isViewport,
+    wrap
+} from '@eclipse-glsp/client';
+import 'sprotty/css/edit-label.css';
+import { Container } from 'inversify';
+import { createKseDiagramContainer } from './di.config';
+import { download, pngFileName, setExportBaseName, standaloneSvg, svgFileName, svgToPng } from './export';
+import { DIAGRAM_TYPE, STATE_PREFIX } from './model';
+import { ElementJson, toJson } from './model-json';
+import { newClientId, readPageParameters } from './page';
+import { StatusEntry, onStatus, report, statusHistory } from './status-line';
+import { showGridPressed } from './toolbar-sync';
+import './kse.css';
+
+export interface KseHandle {
+    /** Resolved when the first model is shown. */
+    ready: Promise<void>;
+    /** The GLSP client id (also the id of the diagram's base div). */
+    clientId: string;
+    /** The model file the page edits (relative to the served folder). */
+    model: string;
+    /** Sends any GLSP action through the action dispatcher. */
+    dispatch(action: Action): Promise<void>;
+    /** Sends a request action and resolves with its response. */
+    request(action: Action & { requestId: string }): Promise<Action>;
+    /** The current client model as plain JSON. */
+    modelRoot(): ElementJson;
+    /** The diagram as a standalone SVG document. */
+    exportSvg(): Promise<string>;
+    /** The diagram as a PNG (a data: URL). */
+    exportPng(): Promise<string>;
+    /** Runs a toolbar action by its data-action name. */
+    run(action: string): Promise<void>;
+    /** Status and messages reported so far. */
+    messages(): StatusEntry[];
+    /** Whether the model has unsaved changes. */
+    isDirty(): boolean;
+    /** The dependency injection container (for debugging). */
+    container: Container;
+}
+
+declare global {
+    interface Window {
+        kse: KseHandle;
+    }
+}
+
+const parameters = readPageParameters(window.location);
+const clientId = newClientId();
+setExportBaseName(parameters.modelName);
+document.title = `${parameters.modelName} – KSE`;
+
+// the base div of the diagram has the client id as its id (GLSP renders into the element with that id)
+const host = document.getElementById('kse-diagram');
+if (!host) {
+    throw new Error('the page has no #kse-diagram element');
+}
+const baseDiv = document.createElement('div');
+baseDiv.id = clientId;
+baseDiv.className = 'kse-base';
+host.appendChild(baseDiv);
+
+let resolveClient: (client: GLSPClient) => void = () => undefined;
+const clientPromise = new Promise<GLSPClient>(resolve => (resolveClient = resolve));
+
+const container = createKseDiagramContainer(
+    { clientId, diagramType: DIAGRAM_TYPE, sourceUri: parameters.model, glspClientProvider: () => clientPromise },
+    { popupOpenDelay: 500, popupCloseDelay: 300 }
+);
+const dispatcher = container.get(GLSPActionDispatcher);
+const editorContext = container.get(EditorContextService);
+
+let resolveReady: () => void = () => undefined;
+const ready = new Promise<void>(resolve => (resolveReady = resolve));
+let shown = false;
+let revision = 0;
+
+function nextFrame(): Promise<void> {
+    return new Promise(resolve => requestAnimationFrame(() => resolve()));
+}
+
+editorContext.onModelRootChanged(root => {
+    if (root.type === 'NONE' || root.id === 'EMPTY') {
+        return;
+    }
+    revision++;
+    const current = revision;
+    void nextFrame().then(async () => {
+        await nextFrame();
+        document.body.dataset.kseRevision = String(current);
+        if (!shown) {
+            shown = true;
+            await dispatcher.dispatch(fitAction(1, false));
+            await nextFrame();
+            await nextFrame();
+            document.body.dataset.kse = 'ready';
+            report({ kind: 'connection', severity: 'NONE', message: '' });
+            resolveReady();
+        }
+    });
+});
+
+editorContext.onDirtyStateChanged(change => {
+    if (!change.isDirty && change.reason === 'save') {
+        report({ kind: 'status', severity: 'OK', message: `Saved ${parameters.model}` }, 4000);
+    }
+    document.title = `${parameters.modelName}${change.isDirty ? ' *' : ''} – KSE`;
+    document.body.dataset.kseDirty = String(change.isDirty);
+    document.querySelector('[data-action="save"]')?.classList.toggle('kse-dirty', change.isDirty);
+});
+
+/**
+ * Fits the states into the window. The states are named: with no ids, sprotty's fit takes every
+ * element's bounds, edges included, whose bounds are not always valid (then it does nothing).
+ */
+function fitAction(maxZoom: number, animate: boolean): FitToScreenAction {
+    const root = editorContext.modelRoot;
+    const ids = root ? root.children.filter(child => child.type.startsWith(STATE_PREFIX)).map(child => child.id) : [];
+    return FitToScreenAction.create(ids, { padding: 24, maxZoom, animate });
+}
+
+function diagramSvg(): SVGSVGElement | null {
+    return document.getElementById(clientId)?.querySelector('svg') ?? null;
+}
+
+function focusDiagram(): void {
+    const svg = diagramSvg();
+    if (svg && typeof (svg as unknown as HTMLElement).focus === 'function') {
+        (svg as unknown as HTMLElement).focus({ preventScroll: true });
+    }
+}
+
+async function exportSvg(): Promise<string> {
+    const response = await dispatcher.request(RequestExportSvgAction.create());
+    return standaloneSvg(response.svg);
+}
+
+function zoomBy(factor: number): Promise<void> {
+    const root = editorContext.modelRoot as GModelRoot;
+    if (!root || !isViewport(root)) {
+        return Promise.resolve();
+    }
+    const canvas = root.canvasBounds;
+    const centre = { x: root.scroll.x + canvas.width / 2 / root.zoom, y: root.scroll.y + canvas.height / 2 / root.zoom };
+    const zoom = Math.min(20, Math.max(0.1, root.zoom * factor));
+    const scroll = { x: centre.x - canvas.width / 2 / zoom, y: centre.y - canvas.height / 2 / zoom };
+    return dispatcher.dispatch(SetViewportAction.create(root.id, { scroll, zoom }, { animate: true }));
+}
+
+function gridManager(): IGridManager | undefined {
+    return container.isBound(TYPES.IGridManager) ? container.get<IGridManager>(TYPES.IGridManager) : undefined;
+}
+
+function updateGridButton(): void {
+    showGridPressed(gridManager()?.isGridVisible ?? false);
+}
+
+async function printDiagram(): Promise<void> {
+    const holder = document.getElementById('kse-print');
+    if (holder) {
+        const svg = await exportSvg();
+        const parsed = new DOMParser().parseFromString(svg, 'image/svg+xml').documentElement;
+        holder.replaceChildren(document.importNode(parsed, true));
+        document.body.classList.add('kse-printing');
+    }
+    window.print();
+}
+
+window.addEventListener('afterprint', () => {
+    document.body.classList.remove('kse-printing');
+    document.getElementById('kse-print')?.replaceChildren();
+});
+
+function failed(what: string): (error: unknown) => void {
+    return error => {
+        const message = error instanceof Error ? error.message : String(error);
+        report({ kind: 'status', severity: 'ERROR', message: `${what} failed: ${message}` });
+    };
+}
+
+const toolbarActions: Record<string, () => Promise<void>> = {
+    save: () => dispatcher.dispatch(SaveModelAction.create()),
+    undo: () => dispatcher.dispatch(UndoAction.create()),
+    redo: () => dispatcher.dispatch(RedoAction.create()),
+    layout: () => dispatcher.dispatch(LayoutOperation.create()),
+    fit: () => dispatcher.dispatch(fitAction(2, true)),
+    'zoom-in': () => zoomBy(1.25),
+    'zoom-out': () => zoomBy(0.8),
+    grid: async () => {
+        gridManager()?.toggleGridVisible();
+        updateGridButton();
+    },
+    'export-svg': async () => {
+        const svg = await exportSvg();
+        download(svgFileName(), new Blob([svg], { type: 'image/svg+xml;charset=utf-8' }));
+    },
+    'export-png': async () => {
+        const png = await svgToPng(await exportSvg());
+        download(pngFileName(), png);
+    },
+    print: () => printDiagram()
+};
+
+async function run(action: string): Promise<void> {
+    const perform = toolbarActions[action];
+    if (!perform) {
+        throw new Error(`unknown toolbar action: ${action}`);
+    }
+    await perform();
+}
+
+for (const button of Array.from(document.querySelectorAll<HTMLButtonElement>('#kse-toolbar [data-action]'))) {
+    const action = button.dataset.action ?? '';
+    // keep the keyboard focus on the diagram, so that its shortcuts go on working after a click
+    button.addEventListener('mousedown', event => event.preventDefault());
+    button.addEventListener('click', () => {
+        run(action)
+            .catch(failed(button.title || action))
+            .finally(() => {
+                if (action !== 'print') {
+                    focusDiagram();
+                }
+            });
+    });
+}
+
+window.kse = {
+    ready,
+    clientId,
+    model: parameters.model,
+    // resolved without a value: what the dispatcher resolves with may be the (cyclic) model
+    dispatch: action => dispatcher.dispatch(action).then(() => undefined),
+    request: action => dispatcher.request(action as Action & { requestId: string }).then(response => JSON.parse(JSON.stringify(response)) as Action),
+    modelRoot: () => toJson(editorContext.modelRoot),
+    exportSvg,
+    exportPng: async () => {
+        const png = await svgToPng(await exportSvg());
+        return await new Promise<string>((resolve, reject) => {
+            const reader = new FileReader();
+            reader.onload = () => resolve(String(reader.result));
+            reader.onerror = () => reject(reader.error);
+            reader.readAsDataURL(png);
+        });
+    },
+    run,
+    messages: () => statusHistory.slice(),
+    isDirty: () => editorContext.isDirty,
+    container
+};
+
+// connection: one WebSocket to the server that served the page
+function connect(): void {
+    if (!parameters.model) {
+        report({ kind: 'connection', severity: 'ERROR', message: 'No model given: open the page with ?token=…&model=<file>.stct' });
+        document.body.dataset.kse = 'error';
+        return;
+    }
+    if (!window.location.host) {
+        report({ kind: 'connection', severity: 'ERROR', message: 'The page must be served by the KSE diagram server (http://127.0.0.1:<port>/).' });
+        document.body.dataset.kse = 'error';
+        return;
+    }
+    report({ kind: 'connection', severity: 'INFO', message: `Connecting to the diagram server for ${parameters.model}…` });
+    const socket = new WebSocket(parameters.socketUrl);
+    let opened = false;
+    socket.addEventListener('open', () => {
+        opened = true;
+        const connection = createWebSocketConnection(wrap(socket));
+        resolveClient(new BaseJsonrpcGLSPClient({ id: 'kse', connectionProvider: connection }));
+        container
+            .get(DiagramLoader)
+            .load()
+            .catch(error => {
+                failed('Opening the diagram')(error);
+                document.body.dataset.kse = 'error';
+            });
+    });
+    socket.addEventListener('close', event => {
+        const reason = event.reason ? `: ${event.reason}` : '';
+        const message = opened
+            ? `Disconnected from the diagram server (${event.code}${reason}). Reload the page to reconnect.`
+            : `Cannot connect to the diagram server (${event.code}${reason}).`;
+        report({ kind: 'connection', severity: 'ERROR', message });
+        document.body.dataset.kseConnection = 'closed';
+        if (!shown) {
+            document.body.dataset.kse = 'error';
+        }
+    });
+}
+
+// a server error before the first model (e.g. "cannot open …") marks the page as failed
+onStatus(entry => {
+    if (!shown && entry.kind === 'message' && (entry.severity === 'ERROR' || entry.severity === 'FATAL')) {
+        document.body.dataset.kse = 'error';
+    }
+});
+
+updateGridButton();
+connect();

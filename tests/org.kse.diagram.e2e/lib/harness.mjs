@@ -1,0 +1,218 @@
+// Shared helpers of the diagram end-to-end tests: the browser, the page of a model, screenshots,
+// the client model (window.kse) and the served folder. run.sh starts the server and passes
+// KSE_E2E_URL (a page URL with the session token) and KSE_E2E_FOLDER (the served folder).
+import { chromium } from 'playwright-core';
+import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const moduleDir = path.resolve(here, '..');
+export const repository = path.resolve(moduleDir, '..', '..');
+export const screenshots = path.join(moduleDir, 'target', 'screenshots');
+export const downloads = path.join(moduleDir, 'target', 'downloads');
+export const goalieSource = path.join(repository, 'examples', 'Goalie', 'Goalie.stct');
+
+function required(name) {
+    const value = process.env[name];
+    if (!value) {
+        throw new Error(`${name} is not set: run the tests with run.sh (it starts the diagram server)`);
+    }
+    return value;
+}
+
+export const pageUrl = () => required('KSE_E2E_URL');
+export const servedFolder = () => required('KSE_E2E_FOLDER');
+
+/** A copy of the Goalie example in the served folder, under a name of its own (tests do not share files). */
+export function copyGoalie(name) {
+    const file = path.join(servedFolder(), `${name}.stct`);
+    copyFileSync(goalieSource, file);
+    return `${name}.stct`;
+}
+
+export function readModelFile(model) {
+    return readFileSync(path.join(servedFolder(), model), 'utf8');
+}
+
+/** Chromium (Debian's), headless, with a fresh profile. */
+export async function launch() {
+    const profile = mkdtempSync(path.join(os.tmpdir(), 'kse-e2e-profile-'));
+    const context = await chromium.launchPersistentContext(profile, {
+        executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+        headless: true,
+        args: [
+            '--headless',
+            '--no-sandbox',
+            '--disable-gpu',
+            '--disable-quic',
+            '--no-first-run',
+            '--disable-background-networking',
+            '--disable-component-update',
+            '--disable-sync'
+        ],
+        viewport: { width: 1400, height: 900 },
+        acceptDownloads: true
+    });
+    const close = async () => {
+        await context.close();
+        rmSync(profile, { recursive: true, force: true });
+    };
+    return { context, close };
+}
+
+const openPages = new Set();
+
+/**
+ * Closes the pages a test left open (e.g. when it failed). The server keeps one client
+ * application at a time, so a page left open would keep the next test's page from opening.
+ */
+export async function closePages() {
+    for (const page of [...openPages]) {
+        await page.close().catch(() => undefined);
+    }
+}
+
+/** Opens the page of a model (relative to the served folder) and waits until its diagram is shown. */
+export async function openModel(context, model, { expectError = false } = {}) {
+    const url = new URL(pageUrl());
+    url.searchParams.set('model', model);
+    const page = await context.newPage();
+    const problems = [];
+    page.on('pageerror', error => problems.push(error.message));
+    page.on('console', message => {
+        if (message.type() === 'error' && !/favicon|Failed to load resource/.test(message.text())) {
+            problems.push(message.text());
+        }
+    });
+    page.problems = problems;
+    if (process.env.KSE_E2E_TRACE) {
+        // KSE_E2E_TRACE=1 prints the GLSP messages (for debugging a test)
+        page.on('websocket', socket => {
+            socket.on('framesent', frame => console.log('>>', String(frame.payload).slice(0, 400)));
+            socket.on('framereceived', frame => console.log('<<', String(frame.payload).slice(0, 400)));
+        });
+    }
+    openPages.add(page);
+    page.on('close', () => openPages.delete(page));
+    await page.goto(url.toString());
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.body.dataset.kse), null, { timeout: 60000 });
+    const state = await page.evaluate(() => document.body.dataset.kse);
+    if (!expectError && state !== 'ready') {
+        const status = await page.locator('#kse-status').innerText();
+        throw new Error(`the diagram of ${model} did not open: ${status}`);
+    }
+    return page;
+}
+
+/** Screenshots of a test's steps: target/screenshots/<test>-<nn>-<step>.png. */
+export function screenshotter(test) {
+    mkdirSync(screenshots, { recursive: true });
+    let count = 0;
+    return async (page, step) => {
+        count++;
+        const file = path.join(screenshots, `${test}-${String(count).padStart(2, '0')}-${step}.png`);
+        await page.screenshot({ path: file });
+        return file;
+    };
+}
+
+export const modelRoot = page => page.evaluate(() => window.kse.modelRoot());
+
+export function flatten(root) {
+    const all = [];
+    (function walk(element, parent) {
+        all.push({ ...element, parentId: parent?.id });
+        for (const child of element.children ?? []) {
+            walk(child, element);
+        }
+    })(root, undefined);
+    return all;
+}
+
+export const states = root => flatten(root).filter(element => element.type.startsWith('state:'));
+export const transitions = root => flatten(root).filter(element => element.type === 'transition');
+
+export function nameOf(root, stateId) {
+    return flatten(root).find(element => element.id === `${stateId}#name`)?.text;
+}
+
+export function stateNamed(root, name) {
+    const label = flatten(root).find(element => element.type === 'label:name' && element.text === name);
+    return label ? states(root).find(state => state.id === label.parentId) : undefined;
+}
+
+export const revision = async page => Number(await page.evaluate(() => document.body.dataset.kseRevision ?? 0));
+
+/** Waits for a model update after `previous` (the revision counter the page keeps). */
+export async function waitForUpdate(page, previous, timeout = 15000) {
+    await page.waitForFunction(before => Number(document.body.dataset.kseRevision ?? 0) > before, previous, { timeout });
+    await page.waitForTimeout(150);
+}
+
+/** Does something and waits for the model update it causes. */
+export async function andUpdate(page, action) {
+    const before = await revision(page);
+    await action();
+    await waitForUpdate(page, before);
+}
+
+/** The on-screen box of a state's shape (in the visible diagram, not the hidden one). */
+export async function shapeBox(page, stateId) {
+    const box = await page.locator(`#kse-diagram [data-id="${cssString(stateId)}"] > .kse-shape`).first().boundingBox();
+    if (!box) {
+        throw new Error(`state ${stateId} is not shown`);
+    }
+    return box;
+}
+
+export function cssString(value) {
+    return value.replace(/\\/g, '\\\\').replace(/"/g, '\\"');
+}
+
+/**
+ * Clicks a state: a box near its left side (not on its name), a disc (START, END, CONDITION) in
+ * its centre; `dx`/`dy` choose another point of its box.
+ */
+export async function clickState(page, stateId, options = {}) {
+    const box = await shapeBox(page, stateId);
+    const round = await page.locator(`#kse-diagram [data-id="${cssString(stateId)}"] > circle.kse-shape`).count();
+    const inset = Math.min(6, box.width / 4, box.height / 4);
+    const dx = options.dx ?? (round ? box.width / 2 : inset);
+    const dy = options.dy ?? box.height / 2;
+    await page.mouse.click(box.x + dx, box.y + dy);
+}
+
+export async function paletteTool(page, label) {
+    await page.locator('.tool-palette .tool-button', { hasText: label }).first().click();
+}
+
+/** Focuses the diagram (its keyboard shortcuts work then) without selecting anything. */
+export async function focusDiagram(page) {
+    await page.evaluate(() => document.querySelector('#kse-diagram svg')?.focus());
+}
+
+/** Whether two boxes overlap (touching edges do not count). */
+export function overlap(a, b) {
+    return a.x < b.x + b.width - 0.5 && b.x < a.x + a.width - 0.5 && a.y < b.y + b.height - 0.5 && b.y < a.y + a.height - 0.5;
+}
+
+/** How many states of each kind a .stct file declares (type="START", …). */
+export function kindCounts(xml) {
+    const counts = {};
+    for (const match of xml.matchAll(/<(?:nodes|Children)\b[^>]*\btype="([A-Z]+)"/g)) {
+        const kind = match[1].toLowerCase();
+        counts[kind] = (counts[kind] ?? 0) + 1;
+    }
+    return counts;
+}
+
+export function clientKindCounts(root) {
+    const counts = {};
+    for (const state of states(root)) {
+        const kind = state.type.substring('state:'.length);
+        counts[kind] = (counts[kind] ?? 0) + 1;
+    }
+    return counts;
+}
