@@ -33,15 +33,24 @@ import org.eclipse.glsp.server.model.GModelState;
 public class StatechartDiagramModule extends DiagramModule {
 
 	private final ServedFolder folder;
+	private final StatechartSources sources;
 
+	/** Serves the statecharts of a folder, each session reading its own copy of the file. */
 	public StatechartDiagramModule(Path servedFolder) {
+		this(servedFolder, new FileSources());
+	}
+
+	/** Serves the statecharts of a folder, as {@code sources} hands them out. */
+	public StatechartDiagramModule(Path servedFolder, StatechartSources sources) {
 		this.folder = new ServedFolder(servedFolder);
+		this.sources = sources;
 	}
 
 	@Override
 	protected void configureBase() {
 		super.configureBase();
 		bind(ServedFolder.class).toInstance(folder);
+		bind(StatechartSources.class).toInstance(sources);
 		bind(StatechartModelState.class).in(com.google.inject.Singleton.class);
 		bind(org.eclipse.glsp.server.features.core.model.ModelSubmissionHandler.class).to(StatechartSubmissions.class).in(com.google.inject.Singleton.class);
 	}
@@ -95,6 +104,7 @@ public class StatechartDiagramModule extends DiagramModule {
 	protected void configureActionHandlers(MultiBinding<ActionHandler> bindings) {
 		super.configureActionHandlers(bindings);
 		bindings.add(ClipboardDataHandler.class);
+		bindings.add(ExternalChangeHandler.class);
 	}
 
 	@Override

@@ -16,8 +16,11 @@ import org.kse.model.statechart.Model;
  */
 public class StatechartModelState extends DefaultGModelState {
 
+	private StatechartSources.Source source;
 	private Model model;
 	private EditingDomain domain;
+	/** Set while the session's own command runs: other changes of the command stack come from elsewhere. */
+	private boolean ownChange;
 	private DiagramLayout layout;
 	private Path file;
 	private final Map<String, EObject> elements = new HashMap<>();
@@ -38,13 +41,50 @@ public class StatechartModelState extends DefaultGModelState {
 		return file;
 	}
 
+	public StatechartSources.Source getSource() {
+		return source;
+	}
+
 	/** Opens a model: the domain's command stack becomes the session's. */
-	public void open(Path file, Model model, EditingDomain domain, DiagramLayout layout) {
+	public void open(Path file, StatechartSources.Source source, DiagramLayout layout) {
 		this.file = file;
-		this.model = model;
-		this.domain = domain;
+		this.source = source;
+		this.model = source.model();
+		this.domain = source.domain();
 		this.layout = layout;
 		setCommandStack(domain.getCommandStack());
+	}
+
+	/** Whether the command stack is changing because of this session's own edit, undo or redo. */
+	public boolean isOwnChange() {
+		return ownChange;
+	}
+
+	@Override
+	public void execute(org.eclipse.emf.common.command.Command command) {
+		own(() -> super.execute(command));
+	}
+
+	@Override
+	public void undo() {
+		own(super::undo);
+	}
+
+	@Override
+	public void redo() {
+		own(super::redo);
+	}
+
+	private void own(Runnable change) {
+		source.access(() -> {
+			ownChange = true;
+			try {
+				change.run();
+			} finally {
+				ownChange = false;
+			}
+			return null;
+		});
 	}
 
 	/** The model element (state or transition) behind a diagram id, labels standing for their element; null when unknown. */

@@ -7,9 +7,6 @@ import org.eclipse.glsp.server.actions.SaveModelAction;
 import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.features.core.model.SourceModelStorage;
 import org.eclipse.glsp.server.types.GLSPServerException;
-import org.eclipse.emf.edit.domain.EditingDomain;
-import org.kse.model.StatechartResources;
-import org.kse.model.edit.StatechartEdits;
 import org.kse.model.statechart.Model;
 import org.kse.notation.NotationFiles;
 
@@ -17,7 +14,8 @@ import com.google.inject.Inject;
 
 /**
  * Opens the statechart a client names in {@code sourceUri} (only inside the served folder) with
- * its notation, and saves both atomically.
+ * its notation (from the {@link StatechartSources} bound: a file, or an editor's model), and
+ * saves both atomically.
  */
 public class StatechartStorage implements SourceModelStorage {
 
@@ -26,6 +24,9 @@ public class StatechartStorage implements SourceModelStorage {
 
 	@Inject
 	private ServedFolder folder;
+
+	@Inject
+	private StatechartSources sources;
 
 	@Override
 	public void loadSourceModel(RequestModelAction action) {
@@ -36,10 +37,11 @@ public class StatechartStorage implements SourceModelStorage {
 			throw new GLSPServerException(e.getMessage(), e);
 		}
 		try {
-			EditingDomain domain = StatechartEdits.newDomain();
-			Model model = StatechartResources.load(domain.getResourceSet(), file);
+			StatechartSources.Source source = sources.open(file);
+			Model model = source.model();
 			NotationFiles.Opened opened = NotationFiles.open(file, model);
-			state.open(file, model, domain, DiagramLayout.of(model, opened.notation()));
+			state.open(file, source, DiagramLayout.of(model, opened.notation()));
+			source.onSave(this::writeNotation);
 		} catch (IOException e) {
 			throw new GLSPServerException("cannot open " + folder.root().relativize(file) + ": " + e.getMessage(), e);
 		}
@@ -48,11 +50,14 @@ public class StatechartStorage implements SourceModelStorage {
 	@Override
 	public void saveSourceModel(SaveModelAction action) {
 		try {
-			StatechartResources.save(state.getModel(), state.getFile());
-			NotationFiles.write(state.getFile(), state.getModel(), state.getLayout().toNotation(state.getModel()));
+			state.getSource().save(this::writeNotation);
 			state.saveIsDone();
 		} catch (IOException e) {
 			throw new GLSPServerException("cannot save " + state.getFile().getFileName() + ": " + e.getMessage(), e);
 		}
+	}
+
+	private void writeNotation() throws IOException {
+		NotationFiles.write(state.getFile(), state.getModel(), state.getLayout().toNotation(state.getModel()));
 	}
 }

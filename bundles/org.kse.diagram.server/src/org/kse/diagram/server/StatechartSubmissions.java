@@ -1,7 +1,12 @@
 package org.kse.diagram.server;
 
+import java.util.List;
+
+import org.eclipse.emf.common.command.CommandStackListener;
+import org.eclipse.glsp.server.actions.Action;
 import org.eclipse.glsp.server.di.ClientId;
 import org.eclipse.glsp.server.features.core.model.ModelSubmissionHandler;
+import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.session.ClientSession;
 import org.eclipse.glsp.server.session.ClientSessionListener;
 import org.eclipse.glsp.server.session.ClientSessionManager;
@@ -9,9 +14,17 @@ import org.eclipse.glsp.server.session.ClientSessionManager;
 import com.google.inject.Inject;
 
 /**
- * GLSP's model submission, whose live validation runs on a thread of its own that GLSP never
- * stops: without this, every diagram page opened in {@code kse serve} would leave a thread behind
- * (and keep a JVM that opened a diagram from exiting). The thread ends with its client session.
+ * GLSP's model submission, made to follow a model that others edit too, and to end with its
+ * session:
+ * <ul>
+ * <li>the diagram is built where the model may be read ({@link StatechartSources.Source#access}),
+ * before GLSP's model lock is taken: its handler of computed bounds holds that lock while it
+ * submits, so the other order would deadlock with a workbench's UI thread;
+ * <li>a change of the command stack that the session did not make (the Properties view, the
+ * tree, the workbench's undo) sends the changed diagram to the client;
+ * <li>the live validation runs on a thread of its own that GLSP never stops: without this, every
+ * diagram page would leave a thread behind (and keep a JVM that opened a diagram from exiting).
+ * </ul>
  */
 public class StatechartSubmissions extends ModelSubmissionHandler implements ClientSessionListener {
 
@@ -20,8 +33,33 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 	private String clientId;
 
 	@Inject
+	private StatechartModelState state;
+
+	private final CommandStackListener externalChanges = event -> {
+		if (!state.isOwnChange()) {
+			actionDispatcher.dispatch(new ExternalChangeAction());
+		}
+	};
+
+	@Inject
 	void listenTo(ClientSessionManager sessions) {
 		sessions.addListener(this, clientId);
+	}
+
+	@Override
+	public List<Action> submitInitialModel(RequestModelAction requestAction) {
+		List<Action> actions = super.submitInitialModel(requestAction);
+		state.getDomain().getCommandStack().addCommandStackListener(externalChanges);
+		return actions;
+	}
+
+	@Override
+	public List<Action> submitModel(String reason) {
+		return access(() -> super.submitModel(reason));
+	}
+
+	private List<Action> access(java.util.function.Supplier<List<Action>> submission) {
+		return state.getSource() == null ? submission.get() : state.getSource().access(submission);
 	}
 
 	@Override
@@ -29,6 +67,10 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 		if (liveValidationDebouncer != null) {
 			liveValidationDebouncer.dispose();
 			liveValidationDebouncer = null;
+		}
+		if (state.getSource() != null) {
+			state.getDomain().getCommandStack().removeCommandStackListener(externalChanges);
+			state.getSource().close();
 		}
 	}
 }

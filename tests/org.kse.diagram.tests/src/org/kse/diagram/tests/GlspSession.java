@@ -34,7 +34,11 @@ final class GlspSession implements AutoCloseable {
 	final List<ActionMessage> received = new CopyOnWriteArrayList<>();
 
 	GlspSession(Path folder) throws Exception {
-		server = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder))).getInstance(GLSPServer.class);
+		this(folder, new org.kse.diagram.server.FileSources());
+	}
+
+	GlspSession(Path folder, org.kse.diagram.server.StatechartSources sources) throws Exception {
+		server = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder, sources))).getInstance(GLSPServer.class);
 		server.connect(message -> {
 			received.add(message);
 			// as the browser client does: measure the new graph and hand it back, which makes it the model

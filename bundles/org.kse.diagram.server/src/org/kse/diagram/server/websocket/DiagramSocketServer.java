@@ -15,7 +15,9 @@ import org.eclipse.jetty.ee10.servlet.ServletHolder;
 import org.eclipse.jetty.ee10.websocket.jakarta.server.config.JakartaWebSocketServletContainerInitializer;
 import org.eclipse.jetty.server.Server;
 import org.eclipse.jetty.server.ServerConnector;
+import org.kse.diagram.server.FileSources;
 import org.kse.diagram.server.ServedFolder;
+import org.kse.diagram.server.StatechartSources;
 import org.kse.diagram.server.StatechartDiagramModule;
 
 import com.google.inject.Guice;
@@ -55,12 +57,20 @@ public final class DiagramSocketServer implements AutoCloseable {
 	 * client's page from {@code pages} (a folder URL ending in {@code /}) when it is not null.
 	 */
 	public static DiagramSocketServer start(Path folder, int port, URL pages) throws Exception {
+		return start(folder, port, pages, new FileSources());
+	}
+
+	/**
+	 * Starts serving {@code folder} as {@code sources} hands its statecharts out (a workbench: its
+	 * editors' models), on a loopback port, with the client's page from {@code pages} when not null.
+	 */
+	public static DiagramSocketServer start(Path folder, int port, URL pages, StatechartSources sources) throws Exception {
 		byte[] random = new byte[32];
 		new SecureRandom().nextBytes(random);
 		String token = Base64.getUrlEncoder().withoutPadding().encodeToString(random);
 		// GLSP binds its server as a singleton that serves one client application: every
 		// connection (a second tab, a second window) gets an injector of its own
-		Supplier<Injector> injectors = () -> Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder)));
+		Supplier<Injector> injectors = () -> Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder, sources)));
 		Server jetty = new Server();
 		ServerConnector connector = new ServerConnector(jetty);
 		connector.setHost("127.0.0.1");

@@ -1,0 +1,57 @@
+package org.kse.diagram.server;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.function.Supplier;
+
+import org.eclipse.emf.edit.domain.EditingDomain;
+import org.kse.model.statechart.Model;
+
+/**
+ * Where a diagram session gets the statechart of a file. {@code kse serve} reads the file for each
+ * session ({@link FileSources}); the workbench hands out the model that its editor of the file
+ * holds, so that the diagram, the tree and the Properties view edit one model on one command
+ * stack, on the workbench's UI thread.
+ */
+public interface StatechartSources {
+
+	/** The statechart of {@code file} (inside the served folder). */
+	Source open(Path file) throws IOException;
+
+	/** Writes a diagram's notation file next to its model. */
+	@FunctionalInterface
+	interface NotationWriter {
+		void write() throws IOException;
+	}
+
+	/** One opened statechart. */
+	interface Source {
+
+		Model model();
+
+		/** The domain whose command stack takes the diagram's edits (and holds its undo and redo). */
+		EditingDomain domain();
+
+		/**
+		 * Runs {@code access} where the model may be read and changed, and returns its result. A
+		 * workbench runs it on its UI thread; a file source runs it where it is called.
+		 */
+		default <T> T access(Supplier<T> access) {
+			return access.get();
+		}
+
+		/**
+		 * Saves the model. {@code notation} writes the diagram's notation file; a source that saves
+		 * on its own (an editor's Save) keeps it to run at every save, until {@link #close()}.
+		 */
+		void save(NotationWriter notation) throws IOException;
+
+		/** Registers what runs after every save made elsewhere (say, the tree's Save); null clears it. */
+		default void onSave(NotationWriter notation) {
+		}
+
+		/** The session ends. */
+		default void close() {
+		}
+	}
+}
