@@ -36,11 +36,20 @@ export function download(fileName: string, blob: Blob): void {
 /** Room left around the diagram in exported pictures. */
 const EXPORT_MARGIN = 12;
 
+/** A rectangle in diagram coordinates (those of the exported SVG's viewBox). */
+export interface Area {
+    x: number;
+    y: number;
+    width: number;
+    height: number;
+}
+
 /**
  * Makes the exported SVG a standalone file: XML declaration, namespace, a white background and a
- * margin around the diagram (GLSP's export ends exactly at the outermost shapes).
+ * margin around the diagram (GLSP's export ends exactly at the outermost shapes). With an
+ * {@link Area} (a selected composite), the picture shows that area only.
  */
-export function standaloneSvg(svg: string): string {
+export function standaloneSvg(svg: string, area?: Area): string {
     const document = new DOMParser().parseFromString(svg, 'image/svg+xml');
     const root = document.documentElement;
     if (root.nodeName.toLowerCase() !== 'svg' || document.getElementsByTagName('parsererror').length > 0) {
@@ -48,7 +57,7 @@ export function standaloneSvg(svg: string): string {
     }
     const viewBox = (root.getAttribute('viewBox') ?? '').split(/[\s,]+/).map(Number);
     if (viewBox.length === 4 && viewBox.every(Number.isFinite)) {
-        const [x, y, width, height] = viewBox;
+        const [x, y, width, height] = area ? [area.x, area.y, area.width, area.height] : viewBox;
         const framed = [x - EXPORT_MARGIN, y - EXPORT_MARGIN, width + 2 * EXPORT_MARGIN, height + 2 * EXPORT_MARGIN];
         root.setAttribute('viewBox', framed.join(' '));
         root.setAttribute('width', String(framed[2]));

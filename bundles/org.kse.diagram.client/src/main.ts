@@ -13,23 +13,28 @@ import {
     FitToScreenAction,
     GLSPActionDispatcher,
     GLSPClient,
+    GChildElement,
+    GModelElement,
     GModelRoot,
     IGridManager,
     LayoutOperation,
     RedoAction,
     RequestExportSvgAction,
     SaveModelAction,
+    SelectAction,
+    SelectionService,
     SetViewportAction,
     TYPES,
     UndoAction,
     createWebSocketConnection,
+    isBoundsAware,
     isViewport,
     wrap
 } from '@eclipse-glsp/client';
 import 'sprotty/css/edit-label.css';
 import { Container } from 'inversify';
 import { createKseDiagramContainer } from './di.config';
-import { download, pngFileName, setExportBaseName, standaloneSvg, svgFileName, svgToPng } from './export';
+import { Area, download, pngFileName, setExportBaseName, standaloneSvg, svgFileName, svgToPng } from './export';
 import { DIAGRAM_TYPE, STATE_PREFIX } from './model';
 import { ElementJson, toJson } from './model-json';
 import { newClientId, readPageParameters } from './page';
@@ -50,16 +55,20 @@ export interface KseHandle {
     request(action: Action & { requestId: string }): Promise<Action>;
     /** The current client model as plain JSON. */
     modelRoot(): ElementJson;
-    /** The diagram as a standalone SVG document. */
-    exportSvg(): Promise<string>;
-    /** The diagram as a PNG (a data: URL). */
-    exportPng(): Promise<string>;
+    /** The diagram (or, with `selected`, the one selected composite state) as a standalone SVG document. */
+    exportSvg(selected?: boolean): Promise<string>;
+    /** The diagram (or, with `selected`, the one selected composite state) as a PNG (a data: URL). */
+    exportPng(selected?: boolean): Promise<string>;
     /** Runs a toolbar action by its data-action name. */
     run(action: string): Promise<void>;
     /** Status and messages reported so far. */
     messages(): StatusEntry[];
     /** Whether the model has unsaved changes. */
     isDirty(): boolean;
+    /** The ids of the selected elements (model element paths; a label's id ends in #name or #expression). */
+    selection(): string[];
+    /** Selects exactly these elements (and reveals nothing else). */
+    select(ids: string[]): Promise<void>;
     /** The dependency injection container (for debugging). */
     container: Container;
 }
@@ -67,6 +76,11 @@ export interface KseHandle {
 declare global {
     interface Window {
         kse: KseHandle;
+        /**
+         * Set by a host that embeds the page (the KSE workbench, through an SWT BrowserFunction):
+         * told the selected ids, as a JSON array, whenever the selection changes.
+         */
+        kseHostSelection?: (idsJson: string) => unknown;
     }
 }
 
@@ -94,6 +108,15 @@ const container = createKseDiagramContainer(
 );
 const dispatcher = container.get(GLSPActionDispatcher);
 const editorContext = container.get(EditorContextService);
+const selectionService = container.get(SelectionService);
+
+selectionService.onSelectionChanged(() => {
+    const ids = selectionService.getSelectedElementIDs();
+    document.body.dataset.kseSelection = ids.join(' ');
+    if (typeof window.kseHostSelection === 'function') {
+        window.kseHostSelection(JSON.stringify(ids));
+    }
+});
 
 let resolveReady: () => void = () => undefined;
 const ready = new Promise<void>(resolve => (resolveReady = resolve));
@@ -155,9 +178,36 @@ function focusDiagram(): void {
     }
 }
 
-async function exportSvg(): Promise<string> {
+/**
+ * Where the one selected composite (OR or AND) state lies in diagram coordinates; undefined when
+ * the selection is not a single composite. Children are placed relative to their parent.
+ */
+function selectedComposite(): Area | undefined {
+    const selected = selectionService.getSelectedElements();
+    if (selected.length !== 1 || !['state:or', 'state:and'].includes(selected[0].type)) {
+        return undefined;
+    }
+    const composite = selected[0] as unknown as GModelElement;
+    if (!isBoundsAware(composite)) {
+        return undefined;
+    }
+    const area = { ...composite.bounds };
+    let parent = (composite as unknown as GChildElement).parent as GModelElement | undefined;
+    while (parent && !(parent instanceof GModelRoot)) {
+        if (isBoundsAware(parent)) {
+            area.x += parent.bounds.x;
+            area.y += parent.bounds.y;
+        }
+        parent = (parent as unknown as GChildElement).parent as GModelElement | undefined;
+    }
+    return area;
+}
+
+/** The diagram as a standalone SVG; with `selected`, only the selected composite when there is one. */
+async function exportSvg(selected = false): Promise<string> {
+    const area = selected ? selectedComposite() : undefined;
     const response = await dispatcher.request(RequestExportSvgAction.create());
-    return standaloneSvg(response.svg);
+    return standaloneSvg(response.svg, area);
 }
 
 function zoomBy(factor: number): Promise<void> {
@@ -216,11 +266,11 @@ const toolbarActions: Record<string, () => Promise<void>> = {
         updateGridButton();
     },
     'export-svg': async () => {
-        const svg = await exportSvg();
+        const svg = await exportSvg(true);
         download(svgFileName(), new Blob([svg], { type: 'image/svg+xml;charset=utf-8' }));
     },
     'export-png': async () => {
-        const png = await svgToPng(await exportSvg());
+        const png = await svgToPng(await exportSvg(true));
         download(pngFileName(), png);
     },
     print: () => printDiagram()
@@ -258,8 +308,8 @@ window.kse = {
     request: action => dispatcher.request(action as Action & { requestId: string }).then(response => JSON.parse(JSON.stringify(response)) as Action),
     modelRoot: () => toJson(editorContext.modelRoot),
     exportSvg,
-    exportPng: async () => {
-        const png = await svgToPng(await exportSvg());
+    exportPng: async (selected?: boolean) => {
+        const png = await svgToPng(await exportSvg(selected));
         return await new Promise<string>((resolve, reject) => {
             const reader = new FileReader();
             reader.onload = () => resolve(String(reader.result));
@@ -270,6 +320,8 @@ window.kse = {
     run,
     messages: () => statusHistory.slice(),
     isDirty: () => editorContext.isDirty,
+    selection: () => selectionService.getSelectedElementIDs(),
+    select: ids => dispatcher.dispatch(SelectAction.setSelection(ids)).then(() => undefined),
     container
 };
 

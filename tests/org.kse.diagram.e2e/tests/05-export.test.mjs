@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, afterEach, before, test } from 'node:test';
-import { copyGoalie, downloads, launch, modelRoot, openModel, screenshotter, states, closePages } from '../lib/harness.mjs';
+import { clickState, copyGoalie, downloads, launch, modelRoot, openModel, screenshotter, stateNamed, states, closePages } from '../lib/harness.mjs';
 
 let browser;
 before(async () => (browser = await launch()));
@@ -61,6 +61,37 @@ function findName(root, id) {
 
 function escapeXml(text) {
     return text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+}
+
+test('Export SVG with a composite selected pictures that composite only', async () => {
+    const shot = screenshotter('export-composite');
+    const model = copyGoalie('Composite');
+    const page = await openModel(browser.context, model);
+    const whole = viewBox(await page.evaluate(() => window.kse.exportSvg()));
+    const root = await modelRoot(page);
+    const followBall = stateNamed(root, 'followBall');
+    assert.equal(followBall?.type, 'state:or', 'followBall is an OR state');
+    await clickState(page, followBall.id);
+    await page.waitForFunction(id => window.kse.selection().includes(id), followBall.id);
+    await shot(page, 'selected');
+    const file = await download(page, 'export-svg');
+    const svg = readFileSync(file.path, 'utf8');
+    const [, , width, height] = viewBox(svg);
+    assert.equal(width, followBall.bounds.width + 24, 'as wide as the composite, with the margin');
+    assert.equal(height, followBall.bounds.height + 24, 'as high as the composite, with the margin');
+    assert.ok(width < whole[2] && height < whole[3], `smaller than the whole diagram (${width} against ${whole[2]})`);
+    assert.ok(svg.includes('>followBall<'), 'the composite is in the picture');
+    const view = await browser.context.newPage();
+    await view.setContent(`<body style="margin:0;background:#fff">${svg.replace(/^<\?xml[^>]*>/, '')}</body>`);
+    await view.screenshot({ path: path.join(path.dirname(await shot(page, 'exported')), 'export-composite-03-file.png'), fullPage: true });
+    await view.close();
+    await page.close();
+});
+
+function viewBox(svg) {
+    const match = /<svg[^>]*\sviewBox="([^"]+)"/.exec(svg);
+    assert.ok(match, 'the SVG has a viewBox');
+    return match[1].split(/[\s,]+/).map(Number);
 }
 
 test('Export PNG downloads <model>.png', async () => {

@@ -28,6 +28,9 @@ public class StatechartStorage implements SourceModelStorage {
 	@Inject
 	private StatechartSources sources;
 
+	@Inject
+	private org.eclipse.glsp.server.actions.ActionDispatcher actions;
+
 	@Override
 	public void loadSourceModel(RequestModelAction action) {
 		Path file;
@@ -57,7 +60,9 @@ public class StatechartStorage implements SourceModelStorage {
 		}
 	}
 
+	/** Writes the notation as part of a save, made here or by the editor that holds the model (then the page learns it is saved). */
 	private void writeNotation() throws IOException {
 		NotationFiles.write(state.getFile(), state.getModel(), state.getLayout().toNotation(state.getModel()));
+		actions.dispatch(new org.eclipse.glsp.server.actions.SetDirtyStateAction(false, org.eclipse.glsp.server.actions.SetDirtyStateAction.Reason.SAVE));
 	}
 }

@@ -74,6 +74,8 @@ class StatechartEditorTest {
 		}
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 860);
 		editor = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), file, StatechartEditor.ID));
+		// these tests are about the Tree tab and its actions (the Diagram tab: DiagramEditorTest)
+		editor.showDiagram(false);
 	}
 
 	@AfterEach

@@ -52,11 +52,13 @@ import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 
 /**
- * The statechart as a tree (the model, its states nested as in the file, then the transitions)
- * with its properties in the tabbed Properties view. States and transitions are added and deleted
- * from the context menu and moved by dragging. Every edit is a command: undo, redo and the dirty
- * state follow the command stack; Save writes the file atomically, Revert reloads it, and a file
- * changed on disk is reloaded when the editor has no unsaved changes.
+ * The statechart as a diagram (Diagram tab: the KSE diagram page in a browser) and as a tree (Tree
+ * tab: the model, its states nested as in the file, then the transitions), with the properties of
+ * what either selects in the tabbed Properties view. On the tree, states and transitions are added
+ * and deleted from the context menu and moved by dragging. Both pages edit one model: every edit
+ * is a command on one stack, so undo, redo and the dirty state follow it whichever page made it;
+ * Save writes the file (and the diagram's notation beside it) atomically, Revert reloads it, and a
+ * file changed on disk is reloaded when the editor has no unsaved changes.
  */
 public class StatechartEditor extends EditorPart implements IEditingDomainProvider, ITabbedPropertySheetPageContributor {
 
@@ -94,6 +96,33 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	private boolean saving;
 	private org.kse.messages.MessageCatalog catalog;
 	private String catalogFolder;
+	private org.eclipse.swt.custom.CTabFolder tabs;
+	private org.kse.ui.model.diagram.DiagramPage diagram;
+	/** Set while a selection made on one page is shown on the other, so that it does not come back. */
+	private boolean syncingSelection;
+	/** What runs after every save: the notation writers of the diagram sessions on this model. */
+	private final List<org.kse.diagram.server.StatechartSources.NotationWriter> saveParticipants = new java.util.concurrent.CopyOnWriteArrayList<>();
+	private final org.kse.ui.model.diagram.WorkspaceDiagramServer.Host diagramHost = new org.kse.ui.model.diagram.WorkspaceDiagramServer.Host() {
+		@Override
+		public Model model() {
+			return model;
+		}
+
+		@Override
+		public EditingDomain domain() {
+			return domain;
+		}
+
+		@Override
+		public void save() {
+			doSave(null);
+		}
+
+		@Override
+		public List<org.kse.diagram.server.StatechartSources.NotationWriter> saveParticipants() {
+			return saveParticipants;
+		}
+	};
 
 	@Override
 	public void init(IEditorSite site, IEditorInput input) throws PartInitException {
@@ -114,6 +143,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		}
 		stack.addCommandStackListener(stackListener);
 		ResourcesPlugin.getWorkspace().addResourceChangeListener(fileListener, IResourceChangeEvent.POST_CHANGE);
+		org.kse.ui.model.diagram.WorkspaceDiagramServer.register(Path.of(file.getLocationURI()), diagramHost);
 		undo = new Action("Undo") {
 			@Override
 			public void run() {
@@ -189,8 +219,65 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		return viewer;
 	}
 
+	/** The Diagram tab's page. */
+	public org.kse.ui.model.diagram.DiagramPage getDiagram() {
+		return diagram;
+	}
+
+	/** Shows the Diagram tab (true) or the Tree tab. */
+	public void showDiagram(boolean show) {
+		tabs.setSelection(show ? 0 : 1);
+		tabChanged();
+	}
+
+	public boolean isDiagramShown() {
+		return tabs.getSelectionIndex() == 0;
+	}
+
 	@Override
 	public void createPartControl(Composite parent) {
+		tabs = new org.eclipse.swt.custom.CTabFolder(parent, SWT.BOTTOM | SWT.FLAT);
+		org.eclipse.swt.custom.CTabItem diagramTab = new org.eclipse.swt.custom.CTabItem(tabs, SWT.NONE);
+		diagramTab.setText("Diagram");
+		org.eclipse.swt.custom.CTabItem treeTab = new org.eclipse.swt.custom.CTabItem(tabs, SWT.NONE);
+		treeTab.setText("Tree");
+		createTree(tabs);
+		treeTab.setControl(viewer.getControl());
+		diagram = new org.kse.ui.model.diagram.DiagramPage(tabs, Path.of(getFile().getLocationURI()), () -> model, this::selectedOnDiagram);
+		diagramTab.setControl(diagram.getControl());
+		tabs.addListener(SWT.Selection, event -> tabChanged());
+		showDiagram(diagram.isAvailable());
+	}
+
+	/**
+	 * The page shown takes the keys: on the diagram, delete, cut, copy and paste are the page's
+	 * own (the workbench's would take Delete from the page's text fields); on the tree, the
+	 * editor's. Undo, redo and save are the editor's on both: one command stack.
+	 */
+	private void tabChanged() {
+		boolean onTree = !isDiagramShown();
+		var bars = getEditorSite().getActionBars();
+		bars.setGlobalActionHandler(ActionFactory.DELETE.getId(), onTree ? delete : null);
+		bars.setGlobalActionHandler(ActionFactory.CUT.getId(), onTree ? cut : null);
+		bars.setGlobalActionHandler(ActionFactory.COPY.getId(), onTree ? copy : null);
+		bars.setGlobalActionHandler(ActionFactory.PASTE.getId(), onTree ? paste : null);
+		bars.updateActionBars();
+	}
+
+	/** Elements selected on the diagram become the editor's selection (the tree's, which the Properties view follows). */
+	private void selectedOnDiagram(List<EObject> elements) {
+		if (viewer == null || viewer.getControl().isDisposed()) {
+			return;
+		}
+		syncingSelection = true;
+		try {
+			viewer.setSelection(elements.isEmpty() ? StructuredSelection.EMPTY : new StructuredSelection(elements), true);
+		} finally {
+			syncingSelection = false;
+		}
+	}
+
+	private void createTree(Composite parent) {
 		viewer = new TreeViewer(parent, SWT.MULTI | SWT.H_SCROLL | SWT.V_SCROLL);
 		viewer.setContentProvider(new ITreeContentProvider() {
 			@Override
@@ -246,6 +333,11 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		viewer.expandToLevel(4);
 		getSite().setSelectionProvider(viewer);
 		viewer.addSelectionChangedListener(event -> updateActions());
+		viewer.addSelectionChangedListener(event -> {
+			if (!syncingSelection && diagram != null) {
+				diagram.select(viewer.getStructuredSelection().toList());
+			}
+		});
 		createContextMenu();
 		StructureDragAndDrop.install(this);
 		updateActions();
@@ -447,8 +539,12 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		saving = true;
 		try {
 			StatechartResources.save(model, Path.of(file.getLocationURI()));
+			for (var participant : saveParticipants) {
+				participant.write();
+			}
 			((BasicCommandStack) domain.getCommandStack()).saveIsDone();
-			file.refreshLocal(IResource.DEPTH_ZERO, monitor);
+			// the folder, for the notation file written beside the model
+			file.getParent().refreshLocal(IResource.DEPTH_ONE, monitor);
 			firePropertyChange(PROP_DIRTY);
 			updateActions();
 		} catch (IOException | CoreException e) {
@@ -480,6 +576,11 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			viewer.setInput(new Object[] { model });
 			viewer.expandToLevel(4);
 			viewer.setSelection(new StructuredSelection(model));
+		}
+		if (diagram != null) {
+			// the diagram's session holds the model that was dropped: a new one takes the reloaded model
+			saveParticipants.clear();
+			diagram.reload();
 		}
 		refreshSheets();
 		firePropertyChange(PROP_DIRTY);
@@ -523,11 +624,18 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 
 	@Override
 	public void setFocus() {
-		viewer.getControl().setFocus();
+		if (isDiagramShown() && diagram.isAvailable()) {
+			diagram.getBrowser().setFocus();
+		} else {
+			viewer.getControl().setFocus();
+		}
 	}
 
 	@Override
 	public void dispose() {
+		if (getFile() != null) {
+			org.kse.ui.model.diagram.WorkspaceDiagramServer.unregister(Path.of(getFile().getLocationURI()), diagramHost);
+		}
 		ResourcesPlugin.getWorkspace().removeResourceChangeListener(fileListener);
 		domain.getCommandStack().removeCommandStackListener(stackListener);
 		adapterFactory.dispose();

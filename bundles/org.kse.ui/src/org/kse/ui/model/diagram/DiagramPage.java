@@ -1,0 +1,152 @@
+package org.kse.ui.model.diagram;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.SWTError;
+import org.eclipse.swt.browser.Browser;
+import org.eclipse.swt.browser.BrowserFunction;
+import org.eclipse.swt.layout.FillLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+import org.kse.model.statechart.Model;
+
+/**
+ * The statechart diagram inside an editor: the KSE diagram page (the same one {@code kse serve}
+ * shows a browser) in an SWT Browser, served by the {@link WorkspaceDiagramServer}. The page's
+ * selection is reported as model elements; the editor's selection is shown on the page.
+ */
+public final class DiagramPage {
+
+	/** The page's id of the model itself (the diagram's root). */
+	private static final String ROOT_ID = "statechart";
+
+	private final Composite control;
+	private final Browser browser;
+	private final String problem;
+	private final Path file;
+
+	/**
+	 * Creates the page for {@code file}; {@code selected} hears the elements selected on it.
+	 * Without a browser engine (or a diagram client) the page says why and {@link #isAvailable()} is false.
+	 */
+	public DiagramPage(Composite parent, Path file, java.util.function.Supplier<Model> model, Consumer<List<EObject>> selected) {
+		this.file = file;
+		control = new Composite(parent, SWT.NONE);
+		control.setLayout(new FillLayout());
+		Browser created = null;
+		String failure = null;
+		try {
+			created = new Browser(control, SWT.NONE);
+			created.setUrl(WorkspaceDiagramServer.page(file).toString());
+			new BrowserFunction(created, "kseHostSelection") {
+				@Override
+				public Object function(Object[] arguments) {
+					if (arguments.length == 1 && arguments[0] instanceof String json) {
+						selected.accept(elements(model.get(), ids(json)));
+					}
+					return null;
+				}
+			};
+		} catch (SWTError | Exception e) {
+			if (created != null) {
+				created.dispose();
+				created = null;
+			}
+			failure = "The diagram cannot be shown here: " + e.getMessage() + ". The Tree tab edits the statechart.";
+			Label message = new Label(control, SWT.WRAP);
+			message.setText(failure);
+		}
+		browser = created;
+		problem = failure;
+	}
+
+	public Composite getControl() {
+		return control;
+	}
+
+	/** The browser that shows the page; null when the diagram cannot be shown. */
+	public Browser getBrowser() {
+		return browser;
+	}
+
+	public boolean isAvailable() {
+		return browser != null;
+	}
+
+	/** Why the diagram cannot be shown, or null. */
+	public String getProblem() {
+		return problem;
+	}
+
+	/** Opens the page again: a new session on the editor's current model (after Revert, say). */
+	public void reload() {
+		if (browser != null && !browser.isDisposed()) {
+			try {
+				browser.setUrl(WorkspaceDiagramServer.page(file).toString());
+			} catch (Exception e) {
+				browser.setText("<p>" + e.getMessage() + "</p>");
+			}
+		}
+	}
+
+	/** Selects these elements on the page (when it is ready). */
+	public void select(List<?> elements) {
+		if (browser == null || browser.isDisposed()) {
+			return;
+		}
+		StringBuilder ids = new StringBuilder("[");
+		for (Object element : elements) {
+			String id = id(element);
+			if (id != null) {
+				ids.append(ids.length() > 1 ? "," : "").append('"').append(id.replace("\\", "\\\\").replace("\"", "\\\"")).append('"');
+			}
+		}
+		ids.append(']');
+		browser.execute("window.kse && window.kse.ready.then(() => window.kse.select(" + ids + "))");
+	}
+
+	/** Runs a script in the page and returns its result (for tests and the editor's commands). */
+	public Object evaluate(String script) {
+		return browser == null || browser.isDisposed() ? null : browser.evaluate(script);
+	}
+
+	private static String id(Object element) {
+		if (element instanceof Model) {
+			return ROOT_ID;
+		}
+		if (element instanceof EObject object && object.eResource() != null) {
+			return object.eResource().getURIFragment(object);
+		}
+		return null;
+	}
+
+	private static List<String> ids(String json) {
+		List<String> ids = new ArrayList<>();
+		// a JSON array of ids written by the page: strings without escapes other than \" and \\
+		java.util.regex.Matcher strings = java.util.regex.Pattern.compile("\"((?:[^\"\\\\]|\\\\.)*)\"").matcher(json);
+		while (strings.find()) {
+			ids.add(strings.group(1).replace("\\\"", "\"").replace("\\\\", "\\"));
+		}
+		return ids;
+	}
+
+	private static List<EObject> elements(Model model, List<String> ids) {
+		List<EObject> elements = new ArrayList<>();
+		Resource resource = model == null ? null : model.eResource();
+		for (String id : ids) {
+			int hash = id.indexOf('#');
+			String path = hash < 0 ? id : id.substring(0, hash);
+			EObject element = ROOT_ID.equals(path) ? model : resource == null ? null : resource.getEObject(path);
+			if (element != null && !elements.contains(element)) {
+				elements.add(element);
+			}
+		}
+		return elements;
+	}
+}

@@ -1,0 +1,168 @@
+package org.kse.ui.model.diagram;
+
+import java.net.URI;
+import java.net.URL;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Supplier;
+
+import org.eclipse.core.resources.ResourcesPlugin;
+import org.eclipse.emf.edit.domain.EditingDomain;
+import org.eclipse.swt.widgets.Display;
+import org.kse.diagram.server.FileSources;
+import org.kse.diagram.server.StatechartSources;
+import org.kse.diagram.server.websocket.DiagramPages;
+import org.kse.diagram.server.websocket.DiagramSocketServer;
+import org.kse.model.statechart.Model;
+
+/**
+ * The workbench's diagram server: one per workbench, started when the first diagram is shown,
+ * on a loopback port with its own random token, serving the statecharts of the workspace. A
+ * diagram page gets the model of the editor that shows it (see {@link Host}), so that the page,
+ * the tree and the Properties view edit one model on one command stack, on the UI thread.
+ */
+public final class WorkspaceDiagramServer {
+
+	/** What an editor lends the diagram sessions of its file. */
+	public interface Host {
+		Model model();
+
+		EditingDomain domain();
+
+		/** Saves the model, then runs the editor's save participants (the diagrams' notations). */
+		void save();
+
+		List<StatechartSources.NotationWriter> saveParticipants();
+	}
+
+	private static DiagramSocketServer server;
+	private static final Map<Path, Host> hosts = new ConcurrentHashMap<>();
+
+	private WorkspaceDiagramServer() {
+	}
+
+	/** Lends the model of {@code file} to the diagram sessions until {@link #unregister}. */
+	public static void register(Path file, Host host) {
+		hosts.put(key(file), host);
+	}
+
+	public static void unregister(Path file, Host host) {
+		hosts.remove(key(file), host);
+	}
+
+	private static Path key(Path file) {
+		return file.toAbsolutePath().normalize();
+	}
+
+	/** The page that shows {@code file} (inside the workspace), starting the server when needed. */
+	public static synchronized URI page(Path file) throws Exception {
+		if (server == null) {
+			URL pages = DiagramPages.builtIn();
+			if (pages == null) {
+				throw new IllegalStateException("the diagram client (bundle " + DiagramPages.CLIENT_BUNDLE + ") is not installed");
+			}
+			Path workspace = Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI());
+			server = DiagramSocketServer.start(workspace, 0, pages, new EditorSources(Display.getCurrent()));
+			Runtime.getRuntime().addShutdownHook(new Thread(WorkspaceDiagramServer::stop, "kse-diagram-server-stop"));
+		}
+		Path workspace = Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI()).toAbsolutePath().normalize();
+		return server.page(workspace.relativize(key(file)).toString().replace('\\', '/'));
+	}
+
+	static synchronized void stop() {
+		if (server != null) {
+			try {
+				server.close();
+			} catch (Exception e) {
+				// the JVM is ending: nothing is left to tell
+			}
+			server = null;
+		}
+	}
+
+	/** Hands out the model of the editor that holds a file; a file no editor holds is read from disk. */
+	private static final class EditorSources implements StatechartSources {
+		private final Display display;
+		private final FileSources files = new FileSources();
+
+		EditorSources(Display display) {
+			this.display = display;
+		}
+
+		@Override
+		public Source open(Path file) throws java.io.IOException {
+			Host host = hosts.get(key(file));
+			if (host == null) {
+				return files.open(file);
+			}
+			return new Source() {
+				private final List<NotationWriter> mine = new CopyOnWriteArrayList<>();
+
+				@Override
+				public Model model() {
+					return host.model();
+				}
+
+				@Override
+				public EditingDomain domain() {
+					return host.domain();
+				}
+
+				@Override
+				public <T> T access(Supplier<T> access) {
+					if (Display.getCurrent() == display) {
+						return access.get();
+					}
+					Object[] result = new Object[1];
+					RuntimeException[] failure = new RuntimeException[1];
+					if (display.isDisposed()) {
+						throw new IllegalStateException("the workbench has closed");
+					}
+					display.syncExec(() -> {
+						try {
+							result[0] = access.get();
+						} catch (RuntimeException e) {
+							failure[0] = e;
+						}
+					});
+					if (failure[0] != null) {
+						throw failure[0];
+					}
+					@SuppressWarnings("unchecked")
+					T value = (T) result[0];
+					return value;
+				}
+
+				@Override
+				public void save(NotationWriter notation) {
+					access(() -> {
+						if (!host.saveParticipants().contains(notation)) {
+							onSave(notation);
+						}
+						host.save();
+						return null;
+					});
+				}
+
+				@Override
+				public void onSave(NotationWriter notation) {
+					host.saveParticipants().removeAll(mine);
+					mine.clear();
+					if (notation != null) {
+						mine.add(notation);
+						host.saveParticipants().add(notation);
+					}
+				}
+
+				@Override
+				public void close() {
+					host.saveParticipants().removeAll(mine);
+					mine.clear();
+				}
+			};
+		}
+	}
+}
