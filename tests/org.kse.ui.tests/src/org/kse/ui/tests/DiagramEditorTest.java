@@ -176,6 +176,42 @@ class DiagramEditorTest {
 				"the page's own Delete on the Diagram tab (its text fields need the key)");
 	}
 
+	@Test
+	void aBrokenGuardIsMarkedOnTheDiagramAndTheKseCommandsRunFromIt() throws Exception {
+		var transition = editor.getModel().getTransitions().stream().filter(t -> t.getTE() != null && t.getTE().contains("ballfound()>0")).findFirst()
+				.orElseThrow(() -> new AssertionError("a guard to break"));
+		String id = transition.eResource().getURIFragment(transition);
+		// as the Properties view applies an expression: a command on the editor's stack
+		var domain = editor.getEditingDomain();
+		domain.getCommandStack().execute(org.eclipse.emf.edit.command.SetCommand.create(domain, transition,
+				org.kse.model.statechart.StatechartPackage.Literals.TRANSITION__TE, transition.getTE().replace("ballfound()>0", "ballfound()>")));
+		assertTrue(Ui.waitUntil(() -> Boolean.TRUE.equals(page("return document.querySelector('#kse-diagram [data-id=\"" + id + "\"] .sprotty-issue') !== null")), 15_000),
+				"the diagram marks the broken guard");
+		Ui.screenshot("33-diagram-marks-a-broken-guard");
+
+		// the KSE menu's Validate, with the Diagram tab in front, checks the editor's model file
+		editor.doSave(null);
+		Ui.page().activate(editor);
+		assertTrue(editor.isDiagramShown());
+		Ui.run("org.kse.ui.validate");
+		assertTrue(Ui.waitUntil(() -> errorsNaming(transition.getName()) > 0, 20_000), "Validate from the diagram marks the transition");
+	}
+
+	private int errorsNaming(String name) {
+		try {
+			int count = 0;
+			for (var marker : file.findMarkers(org.kse.ui.model.ModelMarkers.MARKER, false, IResource.DEPTH_ZERO)) {
+				if (marker.getAttribute(org.eclipse.core.resources.IMarker.SEVERITY, -1) == org.eclipse.core.resources.IMarker.SEVERITY_ERROR
+						&& marker.getAttribute(org.eclipse.core.resources.IMarker.MESSAGE, "").contains(name)) {
+					count++;
+				}
+			}
+			return count;
+		} catch (org.eclipse.core.runtime.CoreException e) {
+			return -1;
+		}
+	}
+
 	private boolean treeShows(String text) {
 		return shows(editor.getViewer().getTree().getItems(), text);
 	}
