@@ -44,17 +44,53 @@ export interface Area {
     height: number;
 }
 
+/** A composite state to picture alone: where it lies, its id, and the transitions that stay inside it. */
+export interface Focus {
+    area: Area;
+    id: string;
+    innerTransitions: string[];
+}
+
+/**
+ * Leaves only the focused composite in the exported SVG: on the way from its element up to the
+ * root, everything beside that way goes (other states, the ancestors' own shapes and names, and
+ * transitions that leave the composite), but definitions and styles stay.
+ */
+function keepOnly(root: Element, focus: Focus): void {
+    const inside = new Set(focus.innerTransitions);
+    const target = Array.from(root.querySelectorAll('[data-id]')).find(element => element.getAttribute('data-id') === focus.id);
+    if (!target) {
+        return;
+    }
+    let node: Element = target;
+    while (node !== root && node.parentElement) {
+        const parent: Element = node.parentElement;
+        for (const sibling of Array.from(parent.children)) {
+            const name = sibling.localName.toLowerCase();
+            const kept = sibling === node || name === 'defs' || name === 'style' || inside.has(sibling.getAttribute('data-id') ?? '');
+            if (!kept) {
+                sibling.remove();
+            }
+        }
+        node = parent;
+    }
+}
+
 /**
  * Makes the exported SVG a standalone file: XML declaration, namespace, a white background and a
- * margin around the diagram (GLSP's export ends exactly at the outermost shapes). With an
- * {@link Area} (a selected composite), the picture shows that area only.
+ * margin around the diagram (GLSP's export ends exactly at the outermost shapes). With a
+ * {@link Focus} (a selected composite), the picture shows that composite only.
  */
-export function standaloneSvg(svg: string, area?: Area): string {
+export function standaloneSvg(svg: string, focus?: Focus): string {
     const document = new DOMParser().parseFromString(svg, 'image/svg+xml');
     const root = document.documentElement;
     if (root.nodeName.toLowerCase() !== 'svg' || document.getElementsByTagName('parsererror').length > 0) {
         return svg;
     }
+    if (focus) {
+        keepOnly(root, focus);
+    }
+    const area = focus?.area;
     const viewBox = (root.getAttribute('viewBox') ?? '').split(/[\s,]+/).map(Number);
     if (viewBox.length === 4 && viewBox.every(Number.isFinite)) {
         const [x, y, width, height] = area ? [area.x, area.y, area.width, area.height] : viewBox;

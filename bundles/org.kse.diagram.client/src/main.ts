@@ -14,6 +14,7 @@ import {
     GLSPActionDispatcher,
     GLSPClient,
     GChildElement,
+    GEdge,
     GModelElement,
     GModelRoot,
     IGridManager,
@@ -34,7 +35,7 @@ import {
 import 'sprotty/css/edit-label.css';
 import { Container } from 'inversify';
 import { createKseDiagramContainer } from './di.config';
-import { Area, download, pngFileName, setExportBaseName, standaloneSvg, svgFileName, svgToPng } from './export';
+import { Focus, download, pngFileName, setExportBaseName, standaloneSvg, svgFileName, svgToPng } from './export';
 import { DIAGRAM_TYPE, STATE_PREFIX } from './model';
 import { ElementJson, toJson } from './model-json';
 import { newClientId, readPageParameters } from './page';
@@ -179,10 +180,11 @@ function focusDiagram(): void {
 }
 
 /**
- * Where the one selected composite (OR or AND) state lies in diagram coordinates; undefined when
- * the selection is not a single composite. Children are placed relative to their parent.
+ * The one selected composite (OR or AND) state: where it lies in diagram coordinates (children
+ * are placed relative to their parent) and the transitions between its insides; undefined when
+ * the selection is not a single composite. Ids are model paths: an inside's id extends its owner's.
  */
-function selectedComposite(): Area | undefined {
+function selectedComposite(): Focus | undefined {
     const selected = selectionService.getSelectedElements();
     if (selected.length !== 1 || !['state:or', 'state:and'].includes(selected[0].type)) {
         return undefined;
@@ -200,14 +202,18 @@ function selectedComposite(): Area | undefined {
         }
         parent = (parent as unknown as GChildElement).parent as GModelElement | undefined;
     }
-    return area;
+    const within = (id: string | undefined) => id !== undefined && id.startsWith(composite.id + '/');
+    const innerTransitions = Array.from(composite.root.index.all())
+        .filter(element => element instanceof GEdge && within(element.sourceId) && within(element.targetId))
+        .map(element => element.id);
+    return { area, id: composite.id, innerTransitions };
 }
 
 /** The diagram as a standalone SVG; with `selected`, only the selected composite when there is one. */
 async function exportSvg(selected = false): Promise<string> {
-    const area = selected ? selectedComposite() : undefined;
+    const focus = selected ? selectedComposite() : undefined;
     const response = await dispatcher.request(RequestExportSvgAction.create());
-    return standaloneSvg(response.svg, area);
+    return standaloneSvg(response.svg, focus);
 }
 
 function zoomBy(factor: number): Promise<void> {

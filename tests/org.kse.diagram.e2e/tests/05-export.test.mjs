@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, afterEach, before, test } from 'node:test';
-import { clickState, copyGoalie, downloads, launch, modelRoot, openModel, screenshotter, stateNamed, states, closePages } from '../lib/harness.mjs';
+import { clickState, copyGoalie, downloads, launch, modelRoot, openModel, screenshotter, stateNamed, states, transitions as transitionsOf, closePages } from '../lib/harness.mjs';
 
 let browser;
 before(async () => (browser = await launch()));
@@ -81,6 +81,10 @@ test('Export SVG with a composite selected pictures that composite only', async 
     assert.equal(height, followBall.bounds.height + 24, 'as high as the composite, with the margin');
     assert.ok(width < whole[2] && height < whole[3], `smaller than the whole diagram (${width} against ${whole[2]})`);
     assert.ok(svg.includes('>followBall<'), 'the composite is in the picture');
+    assert.ok(svg.includes('>Stare<'), 'with its insides');
+    assert.ok(!svg.includes('>nonPlaying<') && !svg.includes('>playing<'), 'and nothing beside or around it');
+    const drawnTransitions = svg.match(/data-kind="transition"/g)?.length ?? 0;
+    assert.ok(drawnTransitions > 0 && drawnTransitions < transitionsOf(root).length, `only the transitions inside it (${drawnTransitions})`);
     const view = await browser.context.newPage();
     await view.setContent(`<body style="margin:0;background:#fff">${svg.replace(/^<\?xml[^>]*>/, '')}</body>`);
     await view.screenshot({ path: path.join(path.dirname(await shot(page, 'exported')), 'export-composite-03-file.png'), fullPage: true });
