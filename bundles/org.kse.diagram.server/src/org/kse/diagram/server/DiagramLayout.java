@@ -60,6 +60,35 @@ public final class DiagramLayout {
 		return new double[] { x, y };
 	}
 
+	/** Room left between a composite's border and the states it holds, when it grows to hold them. */
+	public static final double MARGIN = 12;
+
+	/**
+	 * The composites that must grow so that {@code owner} holds states placed at {@code placed}
+	 * (relative to it), and so on up: each with its new bounds. Composites only grow, to the right
+	 * and down, so that nothing else moves; empty when everything fits.
+	 */
+	public Map<Node, Bounds> grownToHold(EObject owner, java.util.Collection<Bounds> placed) {
+		Map<Node, Bounds> grown = new java.util.LinkedHashMap<>();
+		java.util.Collection<Bounds> inside = placed;
+		for (EObject each = owner; each instanceof Node composite; each = composite.eContainer()) {
+			Bounds current = get(composite);
+			double width = current.width();
+			double height = current.height();
+			for (Bounds child : inside) {
+				width = Math.max(width, child.x() + child.width() + MARGIN);
+				height = Math.max(height, child.y() + child.height() + MARGIN);
+			}
+			if (width == current.width() && height == current.height()) {
+				break;
+			}
+			Bounds larger = new Bounds(current.x(), current.y(), width, height);
+			grown.put(composite, larger);
+			inside = java.util.List.of(larger);
+		}
+		return grown;
+	}
+
 	/** The layout as a notation file holds it: every state of the model, keyed by its path now. */
 	public Notation toNotation(Model model) {
 		Notation notation = new Notation();

@@ -78,10 +78,20 @@ class DiagramEditingTest {
 	}
 
 	private Model saved() throws Exception {
-		int saves = session.count(org.eclipse.glsp.server.actions.SetDirtyStateAction.class);
+		// counted by the save's own answer: an edit's dirty state may still be on its way
+		int saves = saves();
 		session.send(new SaveModelAction());
-		session.next(org.eclipse.glsp.server.actions.SetDirtyStateAction.class, saves);
+		long end = System.currentTimeMillis() + 10_000;
+		while (saves() == saves && System.currentTimeMillis() < end) {
+			Thread.sleep(10);
+		}
+		assertTrue(saves() > saves, "the save is answered: " + session.kinds());
 		return StatechartResources.load(folder.resolve("Goalie.stct"));
+	}
+
+	private int saves() {
+		return (int) session.all(org.eclipse.glsp.server.actions.SetDirtyStateAction.class).stream()
+				.filter(action -> org.eclipse.glsp.server.actions.SetDirtyStateAction.Reason.SAVE.equals(action.getReason().orElse(""))).count();
 	}
 
 	private static GNode node(GGraph graph, String id) {
@@ -205,7 +215,7 @@ class DiagramEditingTest {
 		assertEquals("Scan", ((org.eclipse.glsp.graph.GLabel) StatechartGraph.find(graph, scan + "#name")).getText());
 		assertTrue(session.refusal(new ApplyLabelEditOperation(scan + "#name", "9Scan")).contains("C++ class name"));
 		graph = session.graphAfter(new ApplyLabelEditOperation(scan + "#name", "ScanField"));
-		assertEquals("ScanField", ((org.eclipse.glsp.graph.GLabel) StatechartGraph.find(graph, scan + "#name")).getText());
+		assertEquals("ScanField", ((org.eclipse.glsp.graph.GLabel) StatechartGraph.find(graph, scan + "#name")).getText(), session.kinds());
 		Model model = StatechartResources.load(folder.resolve("Goalie.stct"));
 		int guarded = 0;
 		while (model.getTransitions().get(guarded).getTE() == null || model.getTransitions().get(guarded).getTE().isBlank()
@@ -261,6 +271,43 @@ class DiagramEditingTest {
 		long inner = model.getTransitions().stream().filter(t -> t.getSource().getLabel().startsWith(label + ".") && t.getTarget().getLabel().startsWith(label + ".")).count();
 		assertTrue(inner > 0, "the inner transitions come along");
 		assertNotNull(NotationFiles.open(folder.resolve("Goalie.stct"), model).notation().get(pasted), "drawn where it was pasted");
+	}
+
+	@Test
+	void aCompositeGrowsToHoldWhatIsPastedOrMovedIntoIt() throws Exception {
+		graph = session.graphAfter(create("state:or", StatechartGraph.ROOT, 1400, 40));
+		GNode box = node(graph, "//@nodes.1");
+		double width = box.getSize().getWidth();
+		double height = box.getSize().getHeight();
+		EditorContext selection = new EditorContext();
+		selection.setSelectedElementIds(List.of(PLAYING));
+		int copies = session.count(SetClipboardDataAction.class);
+		session.send(new RequestClipboardDataAction(selection));
+		PasteOperation paste = new PasteOperation();
+		paste.setClipboardData(session.next(SetClipboardDataAction.class, copies).getClipboardData());
+		EditorContext target = new EditorContext();
+		target.setSelectedElementIds(List.of("//@nodes.1"));
+		paste.setEditorContext(target);
+		graph = session.graphAfter(paste);
+		GNode pasted = node(graph, "//@nodes.1/@Children.0");
+		GNode grown = node(graph, "//@nodes.1");
+		assertTrue(pasted.getSize().getWidth() > width, "the pasted state is larger than the new box: the test means something");
+		assertTrue(grown.getSize().getWidth() >= pasted.getPosition().getX() + pasted.getSize().getWidth()
+				&& grown.getSize().getHeight() >= pasted.getPosition().getY() + pasted.getSize().getHeight(),
+				"the box grew to hold the pasted state: " + grown.getSize() + " holds " + pasted.getPosition() + " " + pasted.getSize());
+		assertEquals(box.getPosition().getX(), grown.getPosition().getX(), 0.1, "it grows to the right and down only");
+		graph = session.graphAfter(new UndoAction());
+		assertEquals(width, node(graph, "//@nodes.1").getSize().getWidth(), 0.1, "one undo takes the paste and the growth back");
+		assertEquals(height, node(graph, "//@nodes.1").getSize().getHeight(), 0.1);
+
+		String inner = ROOT + "/@Children.1";
+		double rootWidth = node(graph, ROOT).getSize().getWidth();
+		ElementAndBounds moved = new ElementAndBounds();
+		moved.setElementId(inner);
+		moved.setNewPosition(GraphUtil.point(rootWidth + 50, 60));
+		graph = session.graphAfter(new ChangeBoundsOperation(List.of(moved)));
+		assertTrue(node(graph, ROOT).getSize().getWidth() >= rootWidth + 50 + node(graph, inner).getSize().getWidth(),
+				"a state dragged past its composite's border widens it");
 	}
 
 	@Test

@@ -10,7 +10,7 @@ import org.kse.diagram.server.BoundsCommand;
 import org.kse.model.statechart.Node;
 import org.kse.notation.Bounds;
 
-/** Moved and resized states (positions relative to their parent state). */
+/** Moved and resized states (positions relative to their parent state); their composites grow to hold them. */
 public class ChangeBoundsHandler extends StatechartOperationHandler<ChangeBoundsOperation> {
 
 	@Override
@@ -25,6 +25,21 @@ public class ChangeBoundsHandler extends StatechartOperationHandler<ChangeBounds
 			double height = each.getNewSize() == null ? old.height() : Math.max(8, each.getNewSize().getHeight());
 			moved.put(node, new Bounds(x, y, width, height));
 		}
-		return moved.isEmpty() ? null : new BoundsCommand(moved.size() == 1 ? "Move State" : "Move States", state.getLayout(), moved);
+		if (moved.isEmpty()) {
+			return null;
+		}
+		// a state moved or enlarged past its composite's border: the composite grows (unless it was resized itself)
+		Map<Node, java.util.List<Bounds>> byOwner = new LinkedHashMap<>();
+		moved.forEach((node, bounds) -> {
+			if (node.eContainer() instanceof Node owner && !moved.containsKey(owner)) {
+				byOwner.computeIfAbsent(owner, key -> new java.util.ArrayList<>()).add(bounds);
+			}
+		});
+		Map<Node, Bounds> grown = new LinkedHashMap<>();
+		byOwner.forEach((owner, inside) -> grown.putAll(state.getLayout().grownToHold(owner, inside)));
+		grown.keySet().removeAll(moved.keySet());
+		String label = moved.size() == 1 ? "Move State" : "Move States";
+		moved.putAll(grown);
+		return new BoundsCommand(label, state.getLayout(), moved);
 	}
 }

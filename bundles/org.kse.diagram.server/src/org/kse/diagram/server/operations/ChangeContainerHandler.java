@@ -43,7 +43,10 @@ public class ChangeContainerHandler extends StatechartOperationHandler<ChangeCon
 		}
 		CompoundCommand reparent = new CompoundCommand(CompoundCommand.MERGE_COMMAND_ALL, "Move State");
 		reparent.append(move);
-		reparent.append(new BoundsCommand("Place", state.getLayout(), Map.of(moved, new Bounds(x, y, old.width(), old.height()))));
+		Map<Node, Bounds> placed = new java.util.LinkedHashMap<>();
+		placed.put(moved, new Bounds(x, y, old.width(), old.height()));
+		placed.putAll(state.getLayout().grownToHold(target, List.of(placed.get(moved))));
+		reparent.append(new BoundsCommand("Place", state.getLayout(), placed));
 		return reparent;
 	}
 }

@@ -62,7 +62,10 @@ public class CreateStateHandler extends StatechartOperationHandler<CreateNodeOpe
 		}
 		CompoundCommand create = new CompoundCommand(CompoundCommand.MERGE_COMMAND_ALL, "New " + kind.name() + " State");
 		create.append(StatechartEdits.add(state.getDomain(), state.getModel(), owner, created));
-		create.append(new BoundsCommand("Place", state.getLayout(), java.util.Map.of(created, new Bounds(x, y, size.width(), size.height()))));
+		java.util.Map<Node, Bounds> placed = new java.util.LinkedHashMap<>();
+		placed.put(created, new Bounds(x, y, size.width(), size.height()));
+		placed.putAll(state.getLayout().grownToHold(owner, List.of(placed.get(created))));
+		create.append(new BoundsCommand("Place", state.getLayout(), placed));
 		return create;
 	}
 

@@ -22,7 +22,8 @@ import org.kse.notation.Bounds;
 /**
  * Paste: the copied states go into the selected composite state (or beside the selected state,
  * or to the top of the model), relabelled there with their inner transitions and variables, and
- * drawn as they were, with the first pasted state where the mouse was (or a little off the original).
+ * drawn as they were, with the first pasted state where the mouse was (or a little off the original);
+ * the composite that takes them grows to hold them.
  */
 public class PasteHandler extends StatechartOperationHandler<PasteOperation> {
 
@@ -49,6 +50,7 @@ public class PasteHandler extends StatechartOperationHandler<PasteOperation> {
 		}
 		placed.values().removeIf(java.util.Objects::isNull);
 		offsetTopStates(pasted.states(), placed, owner, operation.getEditorContext().getLastMousePosition().orElse(null));
+		placed.putAll(state.getLayout().grownToHold(owner, pasted.states().stream().map(placed::get).filter(java.util.Objects::nonNull).toList()));
 		CompoundCommand paste = new CompoundCommand(CompoundCommand.MERGE_COMMAND_ALL, "Paste");
 		paste.append(StatechartEdits.paste(state.getDomain(), state.getModel(), pasted));
 		paste.append(new BoundsCommand("Place", state.getLayout(), placed));
