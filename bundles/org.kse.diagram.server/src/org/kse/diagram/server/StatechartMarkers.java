@@ -23,6 +23,11 @@ public class StatechartMarkers implements ModelValidator {
 
 	@Override
 	public List<Marker> validate(List<GModelElement> elements, String reason) {
+		// live validation runs on a thread of its own, while the model's owner may be editing it
+		return state.read(this::markers);
+	}
+
+	private List<Marker> markers() {
 		List<Marker> markers = new ArrayList<>();
 		if (state.getModel() == null) {
 			return markers;

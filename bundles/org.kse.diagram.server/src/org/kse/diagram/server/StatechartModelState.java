@@ -55,6 +55,14 @@ public class StatechartModelState extends DefaultGModelState {
 		setCommandStack(domain.getCommandStack());
 	}
 
+	/**
+	 * Reads the model where it may be read ({@link StatechartSources.Source#access}: a workbench's
+	 * UI thread, which edits it too), and returns what {@code reading} returns.
+	 */
+	public <T> T read(java.util.function.Supplier<T> reading) {
+		return source == null ? reading.get() : source.access(reading);
+	}
+
 	/** Whether the command stack is changing because of this session's own edit, undo or redo. */
 	public boolean isOwnChange() {
 		return ownChange;

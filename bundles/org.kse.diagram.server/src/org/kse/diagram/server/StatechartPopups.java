@@ -22,6 +22,10 @@ public class StatechartPopups implements PopupModelFactory {
 
 	@Override
 	public Optional<GHtmlRoot> createPopupModel(GModelElement element, RequestPopupModelAction action) {
+		return state.read(() -> popup(element, action));
+	}
+
+	private Optional<GHtmlRoot> popup(GModelElement element, RequestPopupModelAction action) {
 		EObject model = state.element(element.getId());
 		String html;
 		if (model instanceof Transition transition) {

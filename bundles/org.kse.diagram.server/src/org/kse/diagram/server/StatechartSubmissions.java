@@ -59,7 +59,7 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 	}
 
 	private List<Action> access(java.util.function.Supplier<List<Action>> submission) {
-		return state.getSource() == null ? submission.get() : state.getSource().access(submission);
+		return state.read(submission);
 	}
 
 	@Override

@@ -21,6 +21,10 @@ public class ClipboardDataHandler extends AbstractActionHandler<RequestClipboard
 
 	@Override
 	protected List<Action> executeAction(RequestClipboardDataAction action) {
+		return state.read(() -> copy(action));
+	}
+
+	private List<Action> copy(RequestClipboardDataAction action) {
 		List<Node> selected = new ArrayList<>();
 		for (String id : action.getEditorContext().getSelectedElementIds()) {
 			if (state.element(id) instanceof Node node && !selected.contains(node)) {

@@ -30,14 +30,14 @@ abstract class StatechartOperationHandler<O extends Operation> implements Operat
 
 	@Override
 	public Optional<Command> createCommand(O operation) {
-		Command command = command(operation);
-		if (command == null) {
-			return Optional.empty();
-		}
-		if (!command.canExecute()) {
-			throw refused("the edit cannot be applied here");
-		}
-		return Optional.of(command);
+		// the model is read where its owner edits it (a workbench's UI thread)
+		return state.read(() -> {
+			Command command = command(operation);
+			if (command != null && !command.canExecute()) {
+				throw refused("the edit cannot be applied here");
+			}
+			return Optional.ofNullable(command);
+		});
 	}
 
 	/** The command of the operation, or null when it changes nothing. */
