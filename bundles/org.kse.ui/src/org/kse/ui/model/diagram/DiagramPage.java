@@ -16,12 +16,19 @@ import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.kse.model.statechart.Model;
 
+import com.google.gson.Gson;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonParseException;
+import com.google.gson.JsonParser;
+
 /**
  * The statechart diagram inside an editor: the KSE diagram page (the same one {@code kse serve}
  * shows a browser) in an SWT Browser, served by the {@link WorkspaceDiagramServer}. The page's
  * selection is reported as model elements; the editor's selection is shown on the page.
  */
 public final class DiagramPage {
+
+	private static final Gson JSON = new Gson();
 
 	/** The page's id of the model itself (the diagram's root). */
 	private static final String ROOT_ID = "statechart";
@@ -100,15 +107,14 @@ public final class DiagramPage {
 		if (browser == null || browser.isDisposed()) {
 			return;
 		}
-		StringBuilder ids = new StringBuilder("[");
+		List<String> ids = new ArrayList<>();
 		for (Object element : elements) {
 			String id = id(element);
 			if (id != null) {
-				ids.append(ids.length() > 1 ? "," : "").append('"').append(id.replace("\\", "\\\\").replace("\"", "\\\"")).append('"');
+				ids.add(id);
 			}
 		}
-		ids.append(']');
-		browser.execute("window.kse && window.kse.ready.then(() => window.kse.select(" + ids + "))");
+		browser.execute("window.kse && window.kse.ready.then(() => window.kse.select(" + JSON.toJson(ids) + "))");
 	}
 
 	/** Runs a script in the page and returns its result (for tests and the editor's commands). */
@@ -126,12 +132,19 @@ public final class DiagramPage {
 		return null;
 	}
 
+	/** The ids the page reports (a JSON array of strings); none when it is not one. */
 	private static List<String> ids(String json) {
 		List<String> ids = new ArrayList<>();
-		// a JSON array of ids written by the page: strings without escapes other than \" and \\
-		java.util.regex.Matcher strings = java.util.regex.Pattern.compile("\"((?:[^\"\\\\]|\\\\.)*)\"").matcher(json);
-		while (strings.find()) {
-			ids.add(strings.group(1).replace("\\\"", "\"").replace("\\\\", "\\"));
+		try {
+			if (JsonParser.parseString(json) instanceof JsonArray array) {
+				array.forEach(each -> {
+					if (each.isJsonPrimitive()) {
+						ids.add(each.getAsString());
+					}
+				});
+			}
+		} catch (JsonParseException e) {
+			// not from our page: nothing is selected
 		}
 		return ids;
 	}
