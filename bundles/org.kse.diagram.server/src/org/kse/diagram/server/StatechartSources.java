@@ -15,8 +15,16 @@ import org.kse.model.statechart.Model;
  */
 public interface StatechartSources {
 
-	/** The statechart of {@code file} (inside the served folder). */
+	/** The statechart of {@code file} (as {@link #locate} found it). */
 	Source open(Path file) throws IOException;
+
+	/**
+	 * The file a client asks for: by default a {@code .stct} inside the served folder, anything
+	 * else refused with an {@link IllegalArgumentException} that says why.
+	 */
+	default Path locate(String requested, ServedFolder folder) {
+		return folder.resolve(requested);
+	}
 
 	/** Writes a diagram's notation file next to its model. */
 	@FunctionalInterface

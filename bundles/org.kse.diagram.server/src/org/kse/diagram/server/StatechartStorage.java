@@ -35,7 +35,7 @@ public class StatechartStorage implements SourceModelStorage {
 	public void loadSourceModel(RequestModelAction action) {
 		Path file;
 		try {
-			file = folder.resolve(action.getOptions().get("sourceUri"));
+			file = sources.locate(action.getOptions().get("sourceUri"), folder);
 		} catch (IllegalArgumentException e) {
 			throw new GLSPServerException(e.getMessage(), e);
 		}

@@ -197,6 +197,28 @@ class DiagramEditorTest {
 		assertTrue(Ui.waitUntil(() -> errorsNaming(transition.getName()) > 0, 20_000), "Validate from the diagram marks the transition");
 	}
 
+	@Test
+	void aProjectOutsideTheWorkspaceFolderHasItsDiagramToo() throws Exception {
+		Path elsewhere = Files.createTempDirectory("kse-elsewhere");
+		IProject outside = ResourcesPlugin.getWorkspace().getRoot().getProject("Elsewhere");
+		var description = ResourcesPlugin.getWorkspace().newProjectDescription("Elsewhere");
+		description.setLocationURI(elsewhere.toUri());
+		outside.create(description, null);
+		outside.open(null);
+		try {
+			IFile model = outside.getFile("Attacker.stct");
+			model.create(new ByteArrayInputStream(Files.readAllBytes(Path.of(System.getProperty("kse.examples"), "Attacker", "Attacker.stct"))), true, null);
+			assertFalse(Path.of(model.getLocationURI()).startsWith(Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI())),
+					"the project lies outside the workspace folder");
+			StatechartEditor attacker = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), model, StatechartEditor.ID));
+			assertTrue(Ui.waitUntil(() -> "ready".equals(attacker.getDiagram().evaluate("return document.body.dataset.kse")), PAGE_TIMEOUT),
+					"its diagram is shown: " + attacker.getDiagram().evaluate("return document.body.textContent"));
+			Ui.page().closeEditor(attacker, false);
+		} finally {
+			outside.delete(true, true, null);
+		}
+	}
+
 	private int errorsNaming(String name) {
 		try {
 			int count = 0;

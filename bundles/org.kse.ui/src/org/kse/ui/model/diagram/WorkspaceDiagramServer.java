@@ -38,8 +38,13 @@ public final class WorkspaceDiagramServer {
 		List<StatechartSources.NotationWriter> saveParticipants();
 	}
 
+	/** How a page names the file of an open editor: {@code <prefix><random key>/<file name>}. */
+	private static final String EDITOR_PREFIX = "editor-";
+
 	private static DiagramSocketServer server;
 	private static final Map<Path, Host> hosts = new ConcurrentHashMap<>();
+	/** The random key of each file lent, by which its page names it: a page opens only files open in an editor. */
+	private static final Map<String, Path> keys = new ConcurrentHashMap<>();
 
 	private WorkspaceDiagramServer() {
 	}
@@ -47,17 +52,27 @@ public final class WorkspaceDiagramServer {
 	/** Lends the model of {@code file} to the diagram sessions until {@link #unregister}. */
 	public static void register(Path file, Host host) {
 		hosts.put(key(file), host);
+		if (!keys.containsValue(key(file))) {
+			byte[] random = new byte[16];
+			new java.security.SecureRandom().nextBytes(random);
+			keys.put(java.util.HexFormat.of().formatHex(random), key(file));
+		}
 	}
 
 	public static void unregister(Path file, Host host) {
-		hosts.remove(key(file), host);
+		if (hosts.remove(key(file), host)) {
+			keys.values().remove(key(file));
+		}
 	}
 
 	private static Path key(Path file) {
 		return file.toAbsolutePath().normalize();
 	}
 
-	/** The page that shows {@code file} (inside the workspace), starting the server when needed. */
+	/**
+	 * The page that shows {@code file}, open in an editor (a project may lie outside the
+	 * workspace folder), starting the server when needed.
+	 */
 	public static synchronized URI page(Path file) throws Exception {
 		if (server == null) {
 			URL pages = DiagramPages.builtIn();
@@ -68,8 +83,9 @@ public final class WorkspaceDiagramServer {
 			server = DiagramSocketServer.start(workspace, 0, pages, new EditorSources(Display.getCurrent()));
 			Runtime.getRuntime().addShutdownHook(new Thread(WorkspaceDiagramServer::stop, "kse-diagram-server-stop"));
 		}
-		Path workspace = Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI()).toAbsolutePath().normalize();
-		return server.page(workspace.relativize(key(file)).toString().replace('\\', '/'));
+		String keyOfFile = keys.entrySet().stream().filter(entry -> entry.getValue().equals(key(file))).map(Map.Entry::getKey).findFirst()
+				.orElseThrow(() -> new IllegalStateException(file.getFileName() + " is not open in a statechart editor"));
+		return server.page(EDITOR_PREFIX + keyOfFile + "/" + file.getFileName());
 	}
 
 	static synchronized void stop() {
@@ -90,6 +106,20 @@ public final class WorkspaceDiagramServer {
 
 		EditorSources(Display display) {
 			this.display = display;
+		}
+
+		/** A file open in an editor, by its key; the workspace's other statecharts by their path in it. */
+		@Override
+		public Path locate(String requested, org.kse.diagram.server.ServedFolder folder) {
+			if (requested != null && requested.startsWith(EDITOR_PREFIX)) {
+				int slash = requested.indexOf('/');
+				Path file = slash < 0 ? null : keys.get(requested.substring(EDITOR_PREFIX.length(), slash));
+				if (file == null || !file.getFileName().toString().equals(requested.substring(slash + 1))) {
+					throw new IllegalArgumentException("refused: " + requested + " is not open in a statechart editor");
+				}
+				return file;
+			}
+			return folder.resolve(requested);
 		}
 
 		@Override
