@@ -219,6 +219,20 @@ class DiagramEditorTest {
 		}
 	}
 
+	@Test
+	void aPageOpensOnlyWhatAnEditorHasOpen() throws Exception {
+		String url = diagram.getBrowser().getUrl();
+		assertTrue(url.startsWith("http://127.0.0.1:") && url.contains("token="), "served on loopback with a token: " + url);
+		String base = url.substring(0, url.indexOf("&model="));
+		for (String model : List.of("editor-00000000000000000000000000000000/Goalie.stct", "Diagrams/Goalie.stct", "../Diagrams/Goalie.stct")) {
+			diagram.getBrowser().setUrl(base + "&model=" + java.net.URLEncoder.encode(model, java.nio.charset.StandardCharsets.UTF_8));
+			// this page's own refusal (it names the file asked for), not the last page's
+			assertTrue(Ui.waitUntil(() -> String.valueOf(page("return document.body.textContent")).contains("refused: " + model + " is not open in a statechart editor"), 30_000),
+					model + " is refused, and the page says why: " + page("return document.body.textContent"));
+			assertEquals("error", page("return document.body.dataset.kse"), "nothing is shown");
+		}
+	}
+
 	private int errorsNaming(String name) {
 		try {
 			int count = 0;

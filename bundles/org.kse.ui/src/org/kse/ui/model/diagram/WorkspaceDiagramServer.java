@@ -12,7 +12,6 @@ import java.util.function.Supplier;
 import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.emf.edit.domain.EditingDomain;
 import org.eclipse.swt.widgets.Display;
-import org.kse.diagram.server.FileSources;
 import org.kse.diagram.server.StatechartSources;
 import org.kse.diagram.server.websocket.DiagramPages;
 import org.kse.diagram.server.websocket.DiagramSocketServer;
@@ -20,9 +19,10 @@ import org.kse.model.statechart.Model;
 
 /**
  * The workbench's diagram server: one per workbench, started when the first diagram is shown,
- * on a loopback port with its own random token, serving the statecharts of the workspace. A
- * diagram page gets the model of the editor that shows it (see {@link Host}), so that the page,
- * the tree and the Properties view edit one model on one command stack, on the UI thread.
+ * on a loopback port with its own random token, serving the statecharts open in statechart
+ * editors (wherever their projects lie), each named by a random key. A diagram page gets the
+ * model of the editor that shows it (see {@link Host}), so that the page, the tree and the
+ * Properties view edit one model on one command stack, on the UI thread.
  */
 public final class WorkspaceDiagramServer {
 
@@ -99,34 +99,30 @@ public final class WorkspaceDiagramServer {
 		}
 	}
 
-	/** Hands out the model of the editor that holds a file; a file no editor holds is read from disk. */
+	/** Hands out the model of the editor that holds a file, named by the key the editor registered. */
 	private static final class EditorSources implements StatechartSources {
 		private final Display display;
-		private final FileSources files = new FileSources();
 
 		EditorSources(Display display) {
 			this.display = display;
 		}
 
-		/** A file open in an editor, by its key; the workspace's other statecharts by their path in it. */
+		/** A file open in an editor, by its key; nothing else. */
 		@Override
 		public Path locate(String requested, org.kse.diagram.server.ServedFolder folder) {
-			if (requested != null && requested.startsWith(EDITOR_PREFIX)) {
-				int slash = requested.indexOf('/');
-				Path file = slash < 0 ? null : keys.get(requested.substring(EDITOR_PREFIX.length(), slash));
-				if (file == null || !file.getFileName().toString().equals(requested.substring(slash + 1))) {
-					throw new IllegalArgumentException("refused: " + requested + " is not open in a statechart editor");
-				}
-				return file;
+			int slash = requested == null || !requested.startsWith(EDITOR_PREFIX) ? -1 : requested.indexOf('/');
+			Path file = slash < 0 ? null : keys.get(requested.substring(EDITOR_PREFIX.length(), slash));
+			if (file == null || !file.getFileName().toString().equals(requested.substring(slash + 1))) {
+				throw new IllegalArgumentException("refused: " + requested + " is not open in a statechart editor");
 			}
-			return folder.resolve(requested);
+			return file;
 		}
 
 		@Override
 		public Source open(Path file) throws java.io.IOException {
 			Host host = hosts.get(key(file));
 			if (host == null) {
-				return files.open(file);
+				throw new java.io.IOException("its editor was closed");
 			}
 			return new Source() {
 				private final List<NotationWriter> mine = new CopyOnWriteArrayList<>();
