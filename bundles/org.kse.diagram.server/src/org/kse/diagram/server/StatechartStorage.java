@@ -46,7 +46,8 @@ public class StatechartStorage implements SourceModelStorage {
 			state.open(file, source, DiagramLayout.of(model, opened.notation()));
 			source.onSave(this::writeNotation);
 		} catch (IOException e) {
-			throw new GLSPServerException("cannot open " + folder.root().relativize(file) + ": " + e.getMessage(), e);
+			String name = file.startsWith(folder.root()) ? folder.root().relativize(file).toString() : file.getFileName().toString();
+			throw new GLSPServerException("cannot open " + name + ": " + e.getMessage(), e);
 		}
 	}
 
