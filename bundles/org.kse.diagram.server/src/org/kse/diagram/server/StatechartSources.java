@@ -49,12 +49,13 @@ public interface StatechartSources {
 		}
 
 		/**
-		 * Saves the model. {@code notation} writes the diagram's notation file; a source that saves
-		 * on its own (an editor's Save) keeps it to run at every save, until {@link #close()}.
+		 * Saves the model and, through {@code notation}, the diagram's notation file. A source
+		 * whose owner saves on its own (an editor) saves as its owner does, which runs what
+		 * {@link #onSave} registered.
 		 */
 		void save(NotationWriter notation) throws IOException;
 
-		/** Registers what runs after every save made elsewhere (say, the tree's Save); null clears it. */
+		/** Registers what runs after every save of the owner's (say, the tree's Save), until {@link #close()}. */
 		default void onSave(NotationWriter notation) {
 		}
 

@@ -55,11 +55,7 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 
 	@Override
 	public List<Action> submitModel(String reason) {
-		return access(() -> super.submitModel(reason));
-	}
-
-	private List<Action> access(java.util.function.Supplier<List<Action>> submission) {
-		return state.read(submission);
+		return state.read(() -> super.submitModel(reason));
 	}
 
 	@Override

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayInputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -48,18 +47,7 @@ class DiagramEditorTest {
 
 	@BeforeEach
 	void openTheGoalie() throws Exception {
-		IProject project = ResourcesPlugin.getWorkspace().getRoot().getProject("Diagrams");
-		if (!project.exists()) {
-			project.create(null);
-		}
-		project.open(null);
-		file = project.getFile("Goalie.stct");
-		byte[] goalie = Files.readAllBytes(Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.stct"));
-		if (file.exists()) {
-			file.setContents(new ByteArrayInputStream(goalie), IResource.FORCE, null);
-		} else {
-			file.create(new ByteArrayInputStream(goalie), true, null);
-		}
+		file = Ui.exampleModel("Diagrams", null, "Goalie");
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 900);
 		editor = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), file, StatechartEditor.ID));
 		diagram = editor.getDiagram();
@@ -200,14 +188,9 @@ class DiagramEditorTest {
 	@Test
 	void aProjectOutsideTheWorkspaceFolderHasItsDiagramToo() throws Exception {
 		Path elsewhere = Files.createTempDirectory("kse-elsewhere");
-		IProject outside = ResourcesPlugin.getWorkspace().getRoot().getProject("Elsewhere");
-		var description = ResourcesPlugin.getWorkspace().newProjectDescription("Elsewhere");
-		description.setLocationURI(elsewhere.toUri());
-		outside.create(description, null);
-		outside.open(null);
+		IFile model = Ui.exampleModel("Elsewhere", elsewhere, "Attacker");
+		IProject outside = model.getProject();
 		try {
-			IFile model = outside.getFile("Attacker.stct");
-			model.create(new ByteArrayInputStream(Files.readAllBytes(Path.of(System.getProperty("kse.examples"), "Attacker", "Attacker.stct"))), true, null);
 			assertFalse(Path.of(model.getLocationURI()).startsWith(Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI())),
 					"the project lies outside the workspace folder");
 			StatechartEditor attacker = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), model, StatechartEditor.ID));

@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayInputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -15,9 +14,7 @@ import java.util.Arrays;
 import java.util.List;
 
 import org.eclipse.core.resources.IFile;
-import org.eclipse.core.resources.IProject;
 import org.eclipse.core.resources.IResource;
-import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.jface.text.source.ISourceViewer;
 import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.swt.SWT;
@@ -54,24 +51,12 @@ import org.kse.ui.model.editor.properties.TransitionSection;
  */
 class StatechartEditorTest {
 
-	private static IProject project;
 	private IFile file;
 	private StatechartEditor editor;
 
 	@BeforeEach
 	void openTheGoalie() throws Exception {
-		project = ResourcesPlugin.getWorkspace().getRoot().getProject("Editing");
-		if (!project.exists()) {
-			project.create(null);
-		}
-		project.open(null);
-		file = project.getFile("Goalie.stct");
-		byte[] goalie = Files.readAllBytes(Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.stct"));
-		if (file.exists()) {
-			file.setContents(new ByteArrayInputStream(goalie), IResource.FORCE, null);
-		} else {
-			file.create(new ByteArrayInputStream(goalie), true, null);
-		}
+		file = Ui.exampleModel("Editing", null, "Goalie");
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 860);
 		editor = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), file, StatechartEditor.ID));
 		// these tests are about the Tree tab and its actions (the Diagram tab: DiagramEditorTest)

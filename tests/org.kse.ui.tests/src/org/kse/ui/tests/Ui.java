@@ -71,6 +71,31 @@ final class Ui {
 		settle(300);
 	}
 
+	/**
+	 * The example model {@code examples/<example>/<example>.stct}, fresh, as a file of the project
+	 * {@code project} (created and opened when needed) at {@code folder}'s location (null: in the workspace).
+	 */
+	static org.eclipse.core.resources.IFile exampleModel(String project, Path folder, String example) throws Exception {
+		var workspace = org.eclipse.core.resources.ResourcesPlugin.getWorkspace();
+		var holder = workspace.getRoot().getProject(project);
+		if (!holder.exists()) {
+			var description = workspace.newProjectDescription(project);
+			if (folder != null) {
+				description.setLocationURI(folder.toUri());
+			}
+			holder.create(description, null);
+		}
+		holder.open(null);
+		var file = holder.getFile(example + ".stct");
+		byte[] model = Files.readAllBytes(Path.of(System.getProperty("kse.examples"), example, example + ".stct"));
+		if (file.exists()) {
+			file.setContents(new java.io.ByteArrayInputStream(model), IResource.FORCE, null);
+		} else {
+			file.create(new java.io.ByteArrayInputStream(model), true, null);
+		}
+		return file;
+	}
+
 	static void run(String command) throws Exception {
 		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(command, null);
 	}

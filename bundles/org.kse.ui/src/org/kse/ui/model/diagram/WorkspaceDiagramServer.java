@@ -6,7 +6,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Supplier;
 
 import org.eclipse.core.resources.ResourcesPlugin;
@@ -125,7 +124,8 @@ public final class WorkspaceDiagramServer {
 				throw new java.io.IOException("its editor was closed");
 			}
 			return new Source() {
-				private final List<NotationWriter> mine = new CopyOnWriteArrayList<>();
+				/** This session's notation writer among the editor's save participants. */
+				private NotationWriter registered;
 
 				@Override
 				public Model model() {
@@ -139,35 +139,17 @@ public final class WorkspaceDiagramServer {
 
 				@Override
 				public <T> T access(Supplier<T> access) {
-					if (Display.getCurrent() == display) {
-						return access.get();
-					}
-					Object[] result = new Object[1];
-					RuntimeException[] failure = new RuntimeException[1];
 					if (display.isDisposed()) {
 						throw new IllegalStateException("the workbench has closed");
 					}
-					display.syncExec(() -> {
-						try {
-							result[0] = access.get();
-						} catch (RuntimeException e) {
-							failure[0] = e;
-						}
-					});
-					if (failure[0] != null) {
-						throw failure[0];
-					}
-					@SuppressWarnings("unchecked")
-					T value = (T) result[0];
-					return value;
+					// on the UI thread already, it runs at once; what it throws is thrown here
+					return display.syncCall(access::get);
 				}
 
+				/** The editor's Save, which writes the notation through the participant {@link #onSave} registered. */
 				@Override
 				public void save(NotationWriter notation) {
 					access(() -> {
-						if (!host.saveParticipants().contains(notation)) {
-							onSave(notation);
-						}
 						host.save();
 						return null;
 					});
@@ -175,18 +157,17 @@ public final class WorkspaceDiagramServer {
 
 				@Override
 				public void onSave(NotationWriter notation) {
-					host.saveParticipants().removeAll(mine);
-					mine.clear();
-					if (notation != null) {
-						mine.add(notation);
-						host.saveParticipants().add(notation);
-					}
+					close();
+					registered = notation;
+					host.saveParticipants().add(notation);
 				}
 
 				@Override
 				public void close() {
-					host.saveParticipants().removeAll(mine);
-					mine.clear();
+					if (registered != null) {
+						host.saveParticipants().remove(registered);
+						registered = null;
+					}
 				}
 			};
 		}
