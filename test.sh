@@ -60,7 +60,7 @@ cmake --install "$out/runtime-plain" > "$out/runtime-install.log"
 ls "$out"/runtime-plain/kse-runtime_*.deb
 
 echo "== Integration: generated code built against the installed runtime and driven"
-tests/integration/run.sh goalie ../shared/legacy-kse/Goalie/Goalie.stct "$out/runtime-prefix" "$out/goalie"
+tests/integration/run.sh goalie tests/data/legacy-kse/Goalie/Goalie.stct "$out/runtime-prefix" "$out/goalie"
 tests/integration/run.sh allkinds tests/org.kse.generator.monas.tests/models/AllKinds.stct "$out/runtime-prefix" "$out/allkinds"
 
 echo "== Examples: Goalie, Attacker, Defender (generated from their models by the Maven build), built with their activities,"
@@ -81,5 +81,5 @@ echo "== kse smoke run"
 ./kse transform -q examples/Goalie/Goalie.txt -o "$out/Goalie.stct"
 ./kse validate "$out/Goalie.stct"
 ./kse label "$out/Goalie.stct"
-./kse validate ../shared/legacy-kse/Goalie/Goalie.stct
-./kse generate -q ../shared/legacy-kse/Goalie/Goalie.stct "$out/goalie-smoke"
+./kse validate tests/data/legacy-kse/Goalie/Goalie.stct
+./kse generate -q tests/data/legacy-kse/Goalie/Goalie.stct "$out/goalie-smoke"

@@ -12,7 +12,7 @@ echo "== flat chain against a hand-written switch"
 "$out/runtime/bench/kse_engine_bench" --benchmark_min_time=0.5 --benchmark_color=false
 echo "== the legacy Goalie"
 rm -rf "$out/goalie-src"
-"$here/kse" generate --quiet "$here/../shared/legacy-kse/Goalie/Goalie.stct" "$out/goalie-src"
+"$here/kse" generate --quiet "$here/tests/data/legacy-kse/Goalie/Goalie.stct" "$out/goalie-src"
 cmake -S "$here/tests/integration/goalie" -B "$out/goalie" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$out/prefix" -DKSE_SOURCE_FOLDER="$out/goalie-src" > "$out/goalie.configure.log"
 cmake --build "$out/goalie" -j 2 --target goalie_bench > "$out/goalie.build.log"

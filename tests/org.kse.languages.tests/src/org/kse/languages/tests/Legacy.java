@@ -12,17 +12,17 @@ import javax.xml.parsers.DocumentBuilderFactory;
 import org.w3c.dom.Element;
 import org.w3c.dom.NodeList;
 
-/** Text taken from the original KSE's Goalie model (set -Dkse.legacy to its directory). */
+/** Text taken from the original KSE's Goalie model, kept in the repository under tests/data/legacy-kse. */
 final class Legacy {
 
-	static final Path DIRECTORY = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+	static final Path DIRECTORY = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");
 
 	private Legacy() {
 	}
 
 	static Path goalieStatechart() {
 		Path path = DIRECTORY.resolve("Goalie/Goalie.stct");
-		assertTrue(Files.isRegularFile(path), () -> "legacy model missing: " + path.toAbsolutePath() + " (set -Dkse.legacy)");
+		assertTrue(Files.isRegularFile(path), () -> "legacy model missing: " + path.toAbsolutePath());
 		return path;
 	}
 

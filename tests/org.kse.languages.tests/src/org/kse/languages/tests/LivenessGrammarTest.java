@@ -164,8 +164,8 @@ class LivenessGrammarTest {
 
 	@Test
 	void theLegacyGoalieFileLoadsWithoutIssues() throws IOException {
-		Path path = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"), "Goalie", "Goalie.txt");
-		assertTrue(Files.isRegularFile(path), () -> "legacy file missing: " + path.toAbsolutePath() + " (set -Dkse.legacy)");
+		Path path = Legacy.DIRECTORY.resolve("Goalie/Goalie.txt");
+		assertTrue(Files.isRegularFile(path), () -> "legacy file missing: " + path.toAbsolutePath());
 		String text = Files.readString(path, StandardCharsets.UTF_8);
 		FormulaLoader.Result result = FormulaLoader.load(text, URI.createFileURI(path.toAbsolutePath().toString()));
 		assertNoIssues(text, result.issues());

@@ -359,7 +359,7 @@ class CommandLineTest {
 
 	@Test
 	void generateWritesMonasCodeAndRefusesModelsWithErrors() throws IOException {
-		Path legacy = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+		Path legacy = Models.LEGACY;
 		Path source = directory.resolve("src");
 		Run run = kse("generate", "--quiet", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
 		assertEquals(0, run.code(), run::all);

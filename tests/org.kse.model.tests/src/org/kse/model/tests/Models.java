@@ -28,7 +28,7 @@ final class Models {
 	static final StatechartFactory FACTORY = StatechartFactory.eINSTANCE;
 
 	/** The files saved by the original KSE (read only: never write there). */
-	static final Path LEGACY = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+	static final Path LEGACY = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");
 
 	private Models() {
 	}
@@ -110,7 +110,7 @@ final class Models {
 	}
 
 	static List<Path> legacyFiles(String extension) {
-		assertTrue(Files.isDirectory(LEGACY), () -> "legacy directory missing: " + LEGACY.toAbsolutePath() + " (set -Dkse.legacy)");
+		assertTrue(Files.isDirectory(LEGACY), () -> "legacy directory missing: " + LEGACY.toAbsolutePath());
 		try (Stream<Path> files = Files.walk(LEGACY)) {
 			List<Path> found = files.filter(Files::isRegularFile).filter(file -> file.getFileName().toString().endsWith(extension)).sorted()
 					.toList();

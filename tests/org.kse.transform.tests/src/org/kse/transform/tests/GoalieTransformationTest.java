@@ -22,7 +22,7 @@ import org.kse.model.statechart.Transition;
 /** The worked example of reference §3 and the original tool's own saved models. */
 class GoalieTransformationTest {
 
-	private static final Path LEGACY = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+	private static final Path LEGACY = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");
 
 	private static Model fromLegacyFormula(String name) throws IOException {
 		return Statecharts.transform(Files.readString(LEGACY.resolve(name).resolve(name + ".txt")));

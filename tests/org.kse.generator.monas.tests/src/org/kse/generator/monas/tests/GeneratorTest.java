@@ -204,7 +204,7 @@ class GeneratorTest {
 
 	@Test
 	void theLegacyGoalieGenerates(@TempDir Path folder) throws Exception {
-		Path legacy = Path.of(System.getProperty("kse.legacy", "../../../shared/legacy-kse"));
+		Path legacy = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");
 		Report report = MonasGenerator.generate(StatechartResources.load(legacy.resolve("Goalie/Goalie.stct")), folder, Options.DEFAULT);
 		List<String> activities = new ArrayList<>();
 		try (Stream<Path> list = Files.list(folder.resolve("activities"))) {
