@@ -6,18 +6,21 @@ import java.util.List;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.expression.ExpressionParser;
+import org.kse.expression.transitionExpression.Event;
+import org.kse.expression.transitionExpression.TransitionExpressionPackage.Literals;
 import org.kse.messages.MessageCatalog;
 
 /**
  * One transition expression checked on its own, as an editor checks it while it is typed: the
- * grammar, then (when it parses) topics, message types and fields against a message catalog.
+ * grammar, then (when it parses) that it has no event (the engine has none to raise), and topics,
+ * message types and fields against a message catalog.
  * The same checks as the statechart validator's, with positions inside the expression.
  */
 public final class ExpressionChecks {
 
-	/** Whether the grammar or the message catalog found it. */
+	/** Whether the grammar, the message catalog, or what the engine can run found it. */
 	public enum Kind {
-		SYNTAX, CATALOG
+		SYNTAX, CATALOG, UNSUPPORTED
 	}
 
 	/**
@@ -52,12 +55,27 @@ public final class ExpressionChecks {
 			}
 		}
 		if (parsed.expression() != null && !parsed.hasErrors()) {
+			Event event = parsed.expression().getEvent();
+			if (event != null) {
+				MessageChecks.Problem problem = MessageChecks.at(event, Literals.EVENT__NAME, text, eventMessage(event.getName()));
+				problems.add(new Problem(Kind.UNSUPPORTED, true, problem.line(), problem.column(), offset(text, problem.line(), problem.column()),
+						problem.message(), null));
+			}
 			for (MessageChecks.Problem problem : messages.check(parsed.expression(), text)) {
 				problems.add(new Problem(Kind.CATALOG, true, problem.line(), problem.column(), offset(text, problem.line(), problem.column()),
 						problem.message(), null));
 			}
 		}
 		return problems;
+	}
+
+	/**
+	 * The original tool generated an event as an object the engine never raised, so a transition
+	 * with one silently never fired; saying so here keeps a migrated model from doing the same.
+	 */
+	private static String eventMessage(String name) {
+		return "events are not supported: the engine never raises '" + name + "', so this transition would never fire (as in the"
+				+ " original KSE); say in the condition what to wait for instead, as in [behavior.Signal.FallMessage.fall()!=0]";
 	}
 
 	private static int offset(String text, int line, int column) {

@@ -55,25 +55,35 @@ final class MessageChecks {
 	/** A variable's type, topic.Kind.Message: null when it is known, else what is wrong. */
 	String checkType(String topic, String message) {
 		if (!topics.contains(topic)) {
-			return "unknown topic '" + topic + "'; known topics: " + String.join(", ", topics);
+			return unknownTopic(topic);
 		}
 		if (catalog.message(message).isEmpty()) {
-			return "unknown message type '" + message + "'";
+			return unknownMessage(message);
 		}
 		return null;
+	}
+
+	/** The nearest topic when one is close, else every known one. */
+	private String unknownTopic(String topic) {
+		return "unknown topic '" + topic + "'" + Suggestions.nearest(topic, topics).map(near -> "; did you mean '" + near + "'?")
+				.orElse("; known topics: " + String.join(", ", topics));
+	}
+
+	private String unknownMessage(String message) {
+		return "unknown message type '" + message + "'" + Suggestions.didYouMean(message, catalog.messages().stream().map(MessageType::name).toList());
 	}
 
 	private void check(EObject owner, String topic, EStructuralFeature topicFeature, String message, EStructuralFeature messageFeature,
 			List<MemberCall> members, boolean setter, String text, List<Problem> problems) {
 		if (topic != null && !topics.contains(topic)) {
-			problems.add(at(owner, topicFeature, text, "unknown topic '" + topic + "'; known topics: " + String.join(", ", topics)));
+			problems.add(at(owner, topicFeature, text, unknownTopic(topic)));
 		}
 		if (message == null) {
 			return;
 		}
 		Optional<MessageType> type = catalog.message(message);
 		if (type.isEmpty()) {
-			problems.add(at(owner, messageFeature, text, "unknown message type '" + message + "'"));
+			problems.add(at(owner, messageFeature, text, unknownMessage(message)));
 			return;
 		}
 		MessageType current = type.get();
@@ -82,7 +92,8 @@ final class MessageChecks {
 			MemberCall member = members.get(i);
 			Optional<Field> field = field(current, member.getName());
 			if (field.isEmpty()) {
-				problems.add(at(member, Literals.MEMBER_CALL__NAME, text, "'" + current.name() + "' has no field '" + member.getName() + "'"));
+				problems.add(at(member, Literals.MEMBER_CALL__NAME, text, "'" + current.name() + "' has no field '" + member.getName() + "'"
+						+ Suggestions.didYouMean(member.getName(), current.fields().stream().map(Field::name).toList())));
 				return;
 			}
 			Optional<MessageType> next = field.get().messageType();
@@ -116,7 +127,7 @@ final class MessageChecks {
 		return type.fields().stream().filter(f -> f.name().toLowerCase(Locale.ROOT).equals(folded)).findFirst();
 	}
 
-	private static Problem at(EObject element, EStructuralFeature feature, String text, String message) {
+	static Problem at(EObject element, EStructuralFeature feature, String text, String message) {
 		List<INode> nodes = NodeModelUtils.findNodesForFeature(element, feature);
 		INode node = nodes.isEmpty() ? NodeModelUtils.findActualNodeFor(element) : nodes.get(0);
 		int offset = node == null ? 0 : node.getOffset();

@@ -47,6 +47,7 @@ public class StatechartValidator implements EValidator {
 	public static final int LEAF_CHILDREN = 13;
 	public static final int DUPLICATE_LABEL = 14;
 	public static final int MESSAGE = 15;
+	public static final int EVENT = 16;
 
 	/** Context key: the {@link MessageCatalog} to check messages against (the standard one when absent). */
 	public static final Object CATALOG = MessageCatalog.class;
@@ -154,7 +155,7 @@ public class StatechartValidator implements EValidator {
 				diagnostics.add(new BasicDiagnostic(problem.error() ? Diagnostic.ERROR : Diagnostic.WARNING, DIAGNOSTIC_SOURCE, EXPRESSION,
 						Labels.describe(transition) + ": " + message, new Object[] { transition, problem.issue() }));
 			} else {
-				error(diagnostics, MESSAGE, transition, message);
+				error(diagnostics, problem.kind() == ExpressionChecks.Kind.UNSUPPORTED ? EVENT : MESSAGE, transition, message);
 			}
 		}
 	}

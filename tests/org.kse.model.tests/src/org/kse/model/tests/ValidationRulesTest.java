@@ -104,6 +104,15 @@ class ValidationRulesTest {
 				new Case("MESSAGE: a publish with an unknown setter", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
 						"'set_falls' sets no field of 'FallMessage'", () -> withExpression("/publish.behavior.State.FallMessage.set_falls(1)"),
 						() -> withExpression("/publish.behavior.State.FallMessage.set_fall(1)").model()),
+				new Case("MESSAGE: a misspelt topic names the nearest", StatechartValidator.MESSAGE, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"expression 1:2: unknown topic 'wordstate'; did you mean 'worldstate'?", () -> withExpression("[wordstate.State.GameStateMessage==NULL]"),
+						() -> withExpression("[worldstate.State.GameStateMessage==NULL]").model()),
+				new Case("EVENT: an event before the condition", StatechartValidator.EVENT, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"expression 1:1: events are not supported: the engine never raises 'BallSeen'",
+						() -> withExpression("BallSeen[behavior.State.HeadToBMessage.ballfound()>0]"),
+						() -> withExpression("[behavior.State.HeadToBMessage.ballfound()>0]").model()),
+				new Case("EVENT: an event alone, on the second line", StatechartValidator.EVENT, Diagnostic.ERROR, "0.2->0.3 (Work_TO_0.3)",
+						"expression 2:3: events are not supported", () -> withExpression("\n  Kicked"), () -> withExpression("\n  ").model()),
 				new Case("MESSAGE: a variable of an unknown type", StatechartValidator.MESSAGE, Diagnostic.ERROR, "variable (ball)",
 						"unknown message type 'HeadMessage'", () -> withVariable("ball", "behavior.State.HeadMessage"),
 						() -> withVariable("ball", "behavior.State.HeadToBMessage").model()),
@@ -168,7 +177,7 @@ class ValidationRulesTest {
 				rules.add(field.getInt(null));
 			}
 		}
-		assertEquals(15, rules.size(), "rule codes of StatechartValidator");
+		assertEquals(16, rules.size(), "rule codes of StatechartValidator");
 		Set<Integer> covered = cases().stream().map(Case::code).collect(Collectors.toCollection(TreeSet::new));
 		assertEquals(rules, covered, "every rule has a broken model in this test");
 	}
