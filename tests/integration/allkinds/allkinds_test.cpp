@@ -61,6 +61,8 @@ TEST(AllKinds, ABallLeadsIntoBothRegionsOfTheAndState) {
 	auto head = std::make_shared<HeadToBMessage>();
 	head->set_ballfound(1);
 	hub.Publish("behavior", Kind::State, head);
+	// !ballAway(WorldInfo) is false while no WorldInfo exists: a world without a ball lets it hold
+	hub.Publish("worldstate", Kind::Data, std::make_shared<WorldInfo>());
 	engine.Activate();
 	engine.RunUntilStable();
 	EXPECT_TRUE(Active(engine, "Node_Together"));

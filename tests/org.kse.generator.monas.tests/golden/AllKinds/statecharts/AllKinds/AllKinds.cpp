@@ -18,19 +18,33 @@ using namespace statechart_engine;
 AllKinds::AllKinds(kse::messaging::MessageHub& hub, const Options& options)
 	: _statechart("Node_Striker", hub, options) {
 	Statechart* Node_0 = &_statechart;
+	Node_0->SetLabel("0");
 	StartState* Node_0_1 = _statechart.Add<StartState>("Node_0_1", Node_0);
+	Node_0_1->SetLabel("0.1");
 	ConditionConnector* Node_0_2 = _statechart.Add<ConditionConnector>("Node_0_2", Node_0);
+	Node_0_2->SetLabel("0.2");
 	BasicState* Node_0_3 = _statechart.Add<BasicState>("Node_Search", Node_0, ActivityFactory::Instance().Create("Search"));
+	Node_0_3->SetLabel("0.3");
 	AndState* Node_0_4 = _statechart.Add<AndState>("Node_Together", Node_0);
+	Node_0_4->SetLabel("0.4");
 	OrState* Node_0_4_1 = _statechart.Add<OrState>("Node_0_4_1", Node_0_4);
+	Node_0_4_1->SetLabel("0.4.1");
 	StartState* Node_0_4_1_1 = _statechart.Add<StartState>("Node_0_4_1_1", Node_0_4_1);
+	Node_0_4_1_1->SetLabel("0.4.1.1");
 	BasicState* Node_0_4_1_2 = _statechart.Add<BasicState>("Node_Track", Node_0_4_1, ActivityFactory::Instance().Create("Track"));
+	Node_0_4_1_2->SetLabel("0.4.1.2");
 	EndState* Node_0_4_1_3 = _statechart.Add<EndState>("Node_0_4_1_3", Node_0_4_1);
+	Node_0_4_1_3->SetLabel("0.4.1.3");
 	OrState* Node_0_4_2 = _statechart.Add<OrState>("Node_0_4_2", Node_0_4);
+	Node_0_4_2->SetLabel("0.4.2");
 	StartState* Node_0_4_2_1 = _statechart.Add<StartState>("Node_0_4_2_1", Node_0_4_2);
+	Node_0_4_2_1->SetLabel("0.4.2.1");
 	BasicState* Node_0_4_2_2 = _statechart.Add<BasicState>("Node_Walk", Node_0_4_2, ActivityFactory::Instance().Create("Walk"));
+	Node_0_4_2_2->SetLabel("0.4.2.2");
 	EndState* Node_0_4_2_3 = _statechart.Add<EndState>("Node_0_4_2_3", Node_0_4_2);
+	Node_0_4_2_3->SetLabel("0.4.2.3");
 	EndState* Node_0_5 = _statechart.Add<EndState>("Node_0_5", Node_0);
+	Node_0_5->SetLabel("0.5");
 
 	// 0.1_TO_0.2: /TimeoutAction.behavior.100
 	_statechart.AddTransition(Node_0_1, Node_0_2, nullptr, std::make_unique<TimeoutAction>("behavior", 100));

@@ -1,7 +1,9 @@
 package org.kse.generator.monas
 
 import java.util.LinkedHashMap
+import java.util.LinkedHashSet
 import java.util.List
+import java.util.Set
 import org.eclipse.emf.ecore.EObject
 import org.kse.expression.transitionExpression.Binary
 import org.kse.expression.transitionExpression.Call
@@ -16,9 +18,15 @@ import org.kse.expression.transitionExpression.StringLiteral
 
 /**
  * A transition's condition as C++. Every message the condition reads becomes one local
- * variable read from the blackboard; every atom that touches a message is guarded by a
- * null check, so a condition on a missing message is false (reference §6), and
- * {@code msg == NULL} tests that the message is absent.
+ * variable read from the blackboard. A term that reads a message is false while that message
+ * is missing, negated or not: its null checks stand outside any {@code !}, so
+ * {@code !m.f()} is {@code (m != nullptr && !m->f())}, as the original generator guarded it.
+ * {@code m == NULL} and {@code m != NULL} (and a bare {@code m}) test whether the message is
+ * there, and keep that meaning under {@code !}.
+ * <p>
+ * {@code TimeoutCheck(topic)} reads the topic's {@code TimeoutMsg}; a guard that has one
+ * processes the blackboard's messages after its reads and before it decides (see
+ * {@link #checksTimeouts()}).
  */
 class ConditionCode {
 
@@ -37,13 +45,18 @@ class ConditionCode {
 		}
 	}
 
+	static val TIMEOUT_CHECK = 'TimeoutCheck'
+
 	val reads = new LinkedHashMap<String, MessageRead>
+	var messageCount = 0
+	var timeoutCount = 0
 
 	/** The C++ boolean expression of a condition; {@link #reads} then lists what it reads. */
 	def String translate(Condition condition) {
-		condition.cpp
+		condition.guarded
 	}
 
+	/** Every read, in order of first use. */
 	def List<MessageRead> reads() {
 		reads.values.toList
 	}
@@ -53,37 +66,112 @@ class ConditionCode {
 		reads.values.map[topic].toSet.toList
 	}
 
-	def private dispatch String cpp(Binary binary) {
+	/** Whether the condition uses TimeoutCheck, so that its guard must process messages before deciding. */
+	def boolean checksTimeouts() {
+		reads.keySet.exists[startsWith(TIMEOUT_CHECK + ' ')]
+	}
+
+	// ---------------------------------------------------------------- the term with its null checks
+
+	def private dispatch String guarded(Binary binary) {
 		switch binary.operator {
-			case '||', case '&&': '''(«binary.left.cpp» «binary.operator» «binary.right.cpp»)'''
-			default: comparison(binary)
+			case '||', case '&&': '''(«binary.left.guarded» «binary.operator» «binary.right.guarded»)'''
+			default: {
+				val nullTest = binary.nullTest
+				if (nullTest !== null) '''(«nullTest.read.variable» «binary.operator» nullptr)''' else guard(binary, binary.comparison)
+			}
 		}
 	}
 
-	def private dispatch String cpp(Not not) '''!«not.operand.cpp»'''
+	/** The operand's null checks stay outside the negation: a negated read of a missing message is false too. */
+	def private dispatch String guarded(Not not) {
+		val checks = not.operand.required
+		val negated = '''!«not.operand.raw»'''
+		if (checks.empty) negated else '''(«checks.map['''«it» != nullptr'''].join(' && ')» && «negated»)'''
+	}
 
-	def private dispatch String cpp(Call call) {
-		if (call.function == 'TimeoutCheck') {
-			val topic = (call.arguments.head as Constant)?.name ?: ''
-			return '''_blk->TimeoutExpired(«CppNames.string(topic)»)'''
+	def private dispatch String guarded(Call call) {
+		if (call.function == TIMEOUT_CHECK) call.value else guard(call, call.value)
+	}
+
+	def private dispatch String guarded(MessageAccess access) {
+		if (access.members.empty) access.presence else guard(access, access.value)
+	}
+
+	def private dispatch String guarded(Condition other) '''(«other.value»)'''
+
+	// ---------------------------------------------------------------- the term alone, its checks made by a negation around it
+
+	def private dispatch String raw(Binary binary) {
+		switch binary.operator {
+			case '||', case '&&': '''(«binary.left.raw» «binary.operator» «binary.right.raw»)'''
+			default: {
+				val nullTest = binary.nullTest
+				if (nullTest !== null) '''(«nullTest.read.variable» «binary.operator» nullptr)''' else '''(«binary.comparison»)'''
+			}
 		}
-		guarded(call, call.value)
 	}
 
-	def private dispatch String cpp(MessageAccess access) {
-		val read = access.read
-		if (access.members.empty) '''(«read.variable» != nullptr)''' else guarded(access, access.value)
+	def private dispatch String raw(Not not) '''!«not.operand.raw»'''
+
+	def private dispatch String raw(Call call) {
+		call.value
 	}
 
-	def private dispatch String cpp(Condition other) '''(«other.value»)'''
+	def private dispatch String raw(MessageAccess access) {
+		if (access.members.empty) access.presence else access.value
+	}
 
-	def private String comparison(Binary binary) {
-		val nullTest = binary.nullTest
-		if (nullTest !== null) {
-			return '''(«nullTest.read.variable» «binary.operator» nullptr)'''
+	def private dispatch String raw(Condition other) '''(«other.value»)'''
+
+	// ---------------------------------------------------------------- what a term dereferences
+
+	/** Variables of the messages a term reads from; a test of a message's presence reads nothing from it. */
+	def private dispatch Set<String> required(Binary binary) {
+		switch binary.operator {
+			case '||', case '&&': {
+				val all = new LinkedHashSet(binary.left.required)
+				all += binary.right.required
+				all
+			}
+			default: if (binary.nullTest !== null) emptySet else binary.accessed
 		}
-		guarded(binary, '''«binary.left.value» «binary.operator» «binary.right.value»''')
 	}
+
+	def private dispatch Set<String> required(Not not) {
+		not.operand.required
+	}
+
+	def private dispatch Set<String> required(Call call) {
+		if (call.function == TIMEOUT_CHECK) emptySet else call.accessed
+	}
+
+	def private dispatch Set<String> required(MessageAccess access) {
+		if (access.members.empty) emptySet else access.accessed
+	}
+
+	def private dispatch Set<String> required(Condition other) {
+		emptySet
+	}
+
+	/** The element's own message accesses and those inside it, as read variables in document order. */
+	def private Set<String> accessed(EObject element) {
+		val accesses = newArrayList
+		if (element instanceof MessageAccess) {
+			accesses += element
+		}
+		element.eAllContents.filter(MessageAccess).forEach[accesses += it]
+		new LinkedHashSet(accesses.map[read.variable])
+	}
+
+	def private String guard(EObject element, CharSequence value) {
+		val checks = element.accessed
+		if (checks.empty) '''(«value»)''' else '''(«checks.map['''«it» != nullptr'''].join(' && ')» && «value»)'''
+	}
+
+	def private String presence(MessageAccess access) '''(«access.read.variable» != nullptr)'''
+
+	def private String comparison(Binary binary) '''«binary.left.value» «binary.operator» «binary.right.value»'''
 
 	/** {@code m == NULL} or {@code NULL != m}: the access, when it names a whole message. */
 	def private MessageAccess nullTest(Binary binary) {
@@ -105,15 +193,7 @@ class ConditionCode {
 		element instanceof Constant && (element as Constant).name == 'NULL'
 	}
 
-	def private String guarded(EObject element, CharSequence value) {
-		val accesses = newArrayList
-		if (element instanceof MessageAccess) {
-			accesses += element
-		}
-		element.eAllContents.filter(MessageAccess).forEach[accesses += it]
-		val checks = accesses.map[read.variable].toSet.map['''«it» != nullptr''']
-		if (checks.empty) '''(«value»)''' else '''(«checks.join(' && ')» && «value»)'''
-	}
+	// ---------------------------------------------------------------- values
 
 	def private dispatch String value(MessageAccess access) {
 		val read = access.read
@@ -123,7 +203,13 @@ class ConditionCode {
 		'''«read.variable»->«access.members.map[call].join('.')»'''
 	}
 
-	def private dispatch String value(Call call) '''«call.function»(«call.arguments.map[value].join(', ')»)'''
+	def private dispatch String value(Call call) {
+		if (call.function == TIMEOUT_CHECK) {
+			val topic = (call.arguments.head as Constant)?.name ?: ''
+			return '''statechart_engine::TimeoutCheck(*_blk, «timeout(topic).variable»)'''
+		}
+		'''«call.function»(«call.arguments.map[value].join(', ')»)'''
+	}
 
 	def private dispatch String value(Binary binary) '''(«binary.left.value» «binary.operator» «binary.right.value»)'''
 
@@ -161,7 +247,14 @@ class ConditionCode {
 	def private MessageRead read(MessageAccess access) {
 		val key = access.topic + '.' + access.kind + '.' + access.message
 		reads.computeIfAbsent(key)[
-			new MessageRead('msg' + reads.size, access.topic, access.kind, CppNames.identifier(access.message))
+			new MessageRead('msg' + messageCount++, access.topic, access.kind, CppNames.identifier(access.message))
+		]
+	}
+
+	/** The wake-up time of a topic's timer, published by its TimeoutAction as a State message. */
+	def private MessageRead timeout(String topic) {
+		reads.computeIfAbsent(TIMEOUT_CHECK + ' ' + topic)[
+			new MessageRead('timeout' + timeoutCount++, topic, 'State', 'TimeoutMsg')
 		]
 	}
 }

@@ -61,8 +61,10 @@ class MonasTemplates {
 		«plan.className»::«plan.className»(kse::messaging::MessageHub& hub, const Options& options)
 			: _statechart(«CppNames.string(plan.stateName(plan.root))», hub, options) {
 			Statechart* «plan.variable(plan.root)» = &_statechart;
+			«plan.root.labelling(plan)»
 			«FOR node : plan.nodes.tail»
 				«node.declaration(plan)»
+				«node.labelling(plan)»
 			«ENDFOR»
 
 			«FOR transition : plan.transitions»
@@ -99,6 +101,11 @@ class MonasTemplates {
 		}
 	}
 
+	/** The engine reports a transition by its states' labels, as the model shows them. */
+	def private static String labelling(Node node, GenerationPlan plan) {
+		if (NodeKind.of(node) === null) '' else '''«plan.variable(node)»->SetLabel(«CppNames.string(node.label ?: '')»);'''
+	}
+
 	def private static String conditionArgument(GenerationPlan.PlannedTransition transition) {
 		if (transition.condition === null) 'nullptr' else '''std::make_unique<«transition.namespace»::«transition.conditionClass»>()'''
 	}
@@ -133,6 +140,9 @@ class MonasTemplates {
 			#include <kse/behavior/Guards.h>
 			#include <kse/messages/all.h>
 			#include <statechart_engine/Interfaces.h>
+			«IF code.checksTimeouts»
+				#include <statechart_engine/TimeoutAction.h>
+			«ENDIF»
 			«FOR header : plan.userHeaders(code.reads.map[type])»
 				#include "«header»"
 			«ENDFOR»
@@ -151,6 +161,10 @@ class MonasTemplates {
 					«FOR read : code.reads»
 						const auto «read.variable» = _blk->Read«read.kind»<«read.type»>(«CppNames.string(read.topic)»);
 					«ENDFOR»
+					«IF code.checksTimeouts»
+						// a TimeoutCheck guard refreshes the blackboard, as the original did; it decides on what was read above
+						_blk->ProcessMessages();
+					«ENDIF»
 					const bool result = «expression»;
 					«IF logger»
 						std::clog << "«transition.conditionClass» " << (result ? "TRUE" : "FALSE") << std::endl;
@@ -173,6 +187,9 @@ class MonasTemplates {
 		#include <kse/behavior/BehaviorConst.h>
 		#include <kse/messages/all.h>
 		#include <statechart_engine/Interfaces.h>
+		«IF !transition.action.filter(TimeoutAction).empty»
+			#include <statechart_engine/TimeoutAction.h>
+		«ENDIF»
 		«FOR header : plan.userHeaders(transition.action.filter(Publish).map[message].toList)»
 			#include "«header»"
 		«ENDFOR»
@@ -181,6 +198,14 @@ class MonasTemplates {
 
 		class «transition.actionClass» : public statechart_engine::IAction {
 		public:
+			«IF !transition.action.filter(TimeoutAction).empty»
+				void UserInit() override {
+					«FOR topic : transition.action.filter(TimeoutAction).map[topic].toSet»
+						statechart_engine::InitTimeout(*_blk, «CppNames.string(topic)»);
+					«ENDFOR»
+				}
+
+			«ENDIF»
 			void Execute() override {
 				«FOR action : transition.action»
 					«action.statement»
@@ -191,11 +216,11 @@ class MonasTemplates {
 		}  // namespace «transition.namespace»
 	'''
 
-	def private static dispatch String statement(TimeoutAction timeout) '''_blk->SetTimeout(«CppNames.string(timeout.topic)», std::chrono::milliseconds(«timeout.milliseconds»));'''
+	def private static dispatch String statement(TimeoutAction timeout) '''statechart_engine::SetTimeout(*_blk, «CppNames.string(timeout.topic)», std::chrono::milliseconds(«timeout.milliseconds»));'''
 
-	def private static dispatch String statement(ProcessMessages action) '''// process_messages: the blackboard is always up to date'''
+	def private static dispatch String statement(ProcessMessages action) '''_blk->ProcessMessages();'''
 
-	def private static dispatch String statement(PublishAll action) '''// publish_all: every publish is delivered at once'''
+	def private static dispatch String statement(PublishAll action) '''// publish_all: nothing to send, each publish above reached the hub when it was made'''
 
 	def private static dispatch String statement(Publish publish) {
 		val members = publish.members

@@ -7,20 +7,25 @@
 #include <kse/behavior/BehaviorConst.h>
 #include <kse/messages/all.h>
 #include <statechart_engine/Interfaces.h>
+#include <statechart_engine/TimeoutAction.h>
 
 namespace kse_statechart_AllKinds {
 
 class TrAction_0_3_TO_0_5 : public statechart_engine::IAction {
 public:
+	void UserInit() override {
+		statechart_engine::InitTimeout(*_blk, "behavior");
+	}
+
 	void Execute() override {
 		{
 			MotionActionMessage message;
 			message.set_command("InitPose");
 			_blk->Publish("motion", kse::messaging::Kind::Signal, message);
 		}
-		// process_messages: the blackboard is always up to date
-		// publish_all: every publish is delivered at once
-		_blk->SetTimeout("behavior", std::chrono::milliseconds(50));
+		_blk->ProcessMessages();
+		// publish_all: nothing to send, each publish above reached the hub when it was made
+		statechart_engine::SetTimeout(*_blk, "behavior", std::chrono::milliseconds(50));
 	}
 };
 

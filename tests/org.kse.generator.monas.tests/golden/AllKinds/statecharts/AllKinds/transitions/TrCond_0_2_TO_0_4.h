@@ -19,7 +19,7 @@ public:
 	bool Eval() override {
 		const auto msg0 = _blk->ReadState<HeadToBMessage>("behavior");
 		const auto msg1 = _blk->ReadData<WorldInfo>("worldstate");
-		const bool result = ((msg0 != nullptr && msg0->ballfound() > 0) && !(msg1 != nullptr && ballAway((*msg1))));
+		const bool result = ((msg0 != nullptr && msg0->ballfound() > 0) && (msg1 != nullptr && !ballAway((*msg1))));
 		return result;
 	}
 };

@@ -6,18 +6,23 @@
 #include <kse/behavior/Guards.h>
 #include <kse/messages/all.h>
 #include <statechart_engine/Interfaces.h>
+#include <statechart_engine/TimeoutAction.h>
 
 namespace kse_statechart_AllKinds {
 
 class TrCond_0_3_TO_0_3 : public statechart_engine::ICondition {
 public:
 	void UserInit() override {
+		_blk->Subscribe("behavior");
 		_blk->Subscribe("worldstate");
 	}
 
 	bool Eval() override {
+		const auto timeout0 = _blk->ReadState<TimeoutMsg>("behavior");
 		const auto msg0 = _blk->ReadState<GameStateMessage>("worldstate");
-		const bool result = (_blk->TimeoutExpired("behavior") && (msg0 != nullptr && msg0->player_state() == PLAYER_PLAYING));
+		// a TimeoutCheck guard refreshes the blackboard, as the original did; it decides on what was read above
+		_blk->ProcessMessages();
+		const bool result = (statechart_engine::TimeoutCheck(*_blk, timeout0) && (msg0 != nullptr && msg0->player_state() == PLAYER_PLAYING));
 		return result;
 	}
 };

@@ -83,7 +83,7 @@ class GeneratorTest {
 		String mixed = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrAction_0_3_TO_0_5.h"));
 		assertTrue(mixed.contains("message.set_command(\"InitPose\");"));
 		assertTrue(mixed.contains("_blk->Publish(\"motion\", kse::messaging::Kind::Signal, message);"));
-		assertTrue(mixed.contains("_blk->SetTimeout(\"behavior\", std::chrono::milliseconds(50));"));
+		assertTrue(mixed.contains("statechart_engine::SetTimeout(*_blk, \"behavior\", std::chrono::milliseconds(50));"), mixed);
 		String nullTest = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h"));
 		assertTrue(nullTest.contains("(msg0 == nullptr) || (msg0 != nullptr && msg0->ballfound() == 0)"), nullTest);
 		String signal = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_4_TO_0_5.h"));
@@ -92,6 +92,70 @@ class GeneratorTest {
 		assertTrue(activity.contains("[[maybe_unused]] const auto ball = _blk->ReadState<HeadToBMessage>(\"behavior\");"), activity);
 		assertTrue(activity.contains("[[maybe_unused]] const auto world = _blk->ReadData<WorldInfo>(\"worldstate\");"), activity);
 		assertTrue(activity.contains("_blk->Subscribe(\"behavior\");"), activity);
+	}
+
+	@Test
+	void aTimeoutCheckGuardReadsThenProcessesMessagesThenDecides(@TempDir Path folder) throws Exception {
+		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		Path transitions = folder.resolve("statecharts/AllKinds/transitions");
+		String guard = Files.readString(transitions.resolve("TrCond_0_3_TO_0_3.h"));
+		int timeoutRead = guard.indexOf("const auto timeout0 = _blk->ReadState<TimeoutMsg>(\"behavior\");");
+		int messageRead = guard.indexOf("const auto msg0 = _blk->ReadState<GameStateMessage>(\"worldstate\");");
+		int processing = guard.indexOf("_blk->ProcessMessages();");
+		int decision = guard.indexOf("const bool result = (statechart_engine::TimeoutCheck(*_blk, timeout0) && (msg0 != nullptr && ");
+		assertTrue(timeoutRead > 0 && messageRead > 0 && processing > timeoutRead && processing > messageRead && decision > processing, guard);
+		assertTrue(guard.contains("_blk->Subscribe(\"behavior\");") && guard.contains("_blk->Subscribe(\"worldstate\");"), "subscribes to the timer's topic too: " + guard);
+		assertTrue(guard.contains("#include <statechart_engine/TimeoutAction.h>"), guard);
+		assertFalse(guard.contains("TimeoutExpired"), guard);
+		for (String other : List.of("TrCond_0_2_TO_0_3.h", "TrCond_0_2_TO_0_4.h", "TrCond_0_3_TO_0_5.h", "TrCond_0_4_TO_0_5.h", "TrCond_0_4_2_2_TO_0_4_2_3.h")) {
+			assertFalse(Files.readString(transitions.resolve(other)).contains("ProcessMessages"), other + ": only TimeoutCheck guards process messages");
+		}
+	}
+
+	@Test
+	void actionListsSetAndInitialiseTimersAndProcessMessages(@TempDir Path folder) throws Exception {
+		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		String action = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrAction_0_3_TO_0_5.h"));
+		int init = action.indexOf("void UserInit() override {\n\t\tstatechart_engine::InitTimeout(*_blk, \"behavior\");\n\t}");
+		int execute = action.indexOf("void Execute() override {");
+		assertTrue(init > 0 && execute > init, "UserInit publishes the empty TimeoutMsg: " + action);
+		int publish = action.indexOf("_blk->Publish(\"motion\"");
+		int processing = action.indexOf("_blk->ProcessMessages();");
+		int timer = action.indexOf("statechart_engine::SetTimeout(*_blk, \"behavior\", std::chrono::milliseconds(50));");
+		assertTrue(publish > execute && processing > publish && timer > processing, "the actions in the model's order: " + action);
+		assertTrue(action.contains("// publish_all: nothing to send, each publish above reached the hub when it was made"), action);
+		try (Stream<Path> walk = Files.walk(folder)) {
+			for (Path file : walk.filter(Files::isRegularFile).toList()) {
+				assertFalse(Files.readString(file).contains("always up to date"), file.toString());
+			}
+		}
+		String chart = Files.readString(folder.resolve("statecharts/AllKinds/AllKinds.cpp"));
+		assertTrue(chart.contains("_statechart.AddTransition(Node_0_1, Node_0_2, nullptr, std::make_unique<TimeoutAction>(\"behavior\", 100));"),
+				"a list that is one TimeoutAction keeps the runtime's class: " + chart);
+	}
+
+	@Test
+	void everyStateIsLabelledRightAfterItsDeclaration(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		MonasGenerator.generate(model, folder, Options.DEFAULT);
+		List<String> lines = Files.readAllLines(folder.resolve("statecharts/AllKinds/AllKinds.cpp"));
+		java.util.regex.Pattern declaration = java.util.regex.Pattern.compile("\\t(?:Statechart|[A-Za-z]+State|ConditionConnector)\\* (Node_\\w+) = .*");
+		List<String> labels = new ArrayList<>();
+		for (int i = 0; i < lines.size(); i++) {
+			var matcher = declaration.matcher(lines.get(i));
+			if (matcher.matches()) {
+				String next = lines.get(i + 1);
+				assertTrue(next.startsWith("\t" + matcher.group(1) + "->SetLabel(\""), lines.get(i) + " is followed by " + next);
+				labels.add(next.substring(next.indexOf('"') + 1, next.lastIndexOf('"')));
+			}
+		}
+		List<String> expected = new ArrayList<>();
+		model.eAllContents().forEachRemaining(element -> {
+			if (element instanceof Node node) {
+				expected.add(node.getLabel());
+			}
+		});
+		assertEquals(expected, labels);
 	}
 
 	@Test
