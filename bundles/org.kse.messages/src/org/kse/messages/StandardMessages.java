@@ -7,17 +7,37 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.stream.Stream;
 
 /**
  * The message set every KSE behaviour can use: the runtime's {@code runtime/messages/*.proto},
- * copied into this bundle by the build, plus whatever a user's source tree adds.
+ * copied into this bundle by the build, plus whatever a user's source tree adds. A source tree
+ * that defines a standard message again (a Monas tree brings its own {@code GameStateMessage},
+ * say) has its own definition used instead of the standard one.
  */
 public final class StandardMessages {
 
 	/** The runtime's .proto files, as bundled under {@code org/kse/messages/standard/}. */
 	public static final List<String> FILES = List.of("Behavior.proto", "Gamecontroller.proto", "Motion.proto", "WorldInfo.proto");
+
+	/**
+	 * Where the standard files live in a catalog: the names the runtime compiles them under
+	 * and a user's .proto imports them by, so that a user file called {@code WorldInfo.proto}
+	 * stays a file of its own.
+	 */
+	public static final String FOLDER = "kse/messages/";
+
+	/** A standard message or enum that a source tree's file defines again, by its full name. */
+	public record Replacement(String type, Path standardFile, Path file) {
+	}
+
+	/** The catalog of a source tree, and the standard types its files replaced (in the standard files' order). */
+	public record Merged(MessageCatalog catalog, List<Replacement> replacements) {
+	}
 
 	private static volatile List<ProtoFile> standard;
 
@@ -28,20 +48,33 @@ public final class StandardMessages {
 	public static List<ProtoFile> files() {
 		List<ProtoFile> result = standard;
 		if (result == null) {
-			List<ProtoFile> parsed = new ArrayList<>();
-			for (String name : FILES) {
-				try (InputStream in = StandardMessages.class.getResourceAsStream("standard/" + name)) {
-					if (in == null) {
-						throw new IllegalStateException("the KSE bundle lacks its standard message file " + name);
-					}
-					parsed.add(ProtoParser.parse(Path.of(name), new String(in.readAllBytes(), StandardCharsets.UTF_8)));
-				} catch (IOException e) {
-					throw new UncheckedIOException(e);
-				}
-			}
-			standard = result = List.copyOf(parsed);
+			standard = result = parseStandard();
 		}
 		return result;
+	}
+
+	/** Whether a type's file is one of the standard files (as named in a catalog). */
+	public static boolean isStandard(Path file) {
+		if (file == null) {
+			return false;
+		}
+		String name = file.toString().replace('\\', '/');
+		return name.startsWith(FOLDER) && FILES.contains(name.substring(FOLDER.length()));
+	}
+
+	private static List<ProtoFile> parseStandard() {
+		List<ProtoFile> parsed = new ArrayList<>();
+		for (String name : FILES) {
+			try (InputStream in = StandardMessages.class.getResourceAsStream("standard/" + name)) {
+				if (in == null) {
+					throw new IllegalStateException("the KSE bundle lacks its standard message file " + name);
+				}
+				parsed.add(ProtoParser.parse(Path.of(FOLDER + name), new String(in.readAllBytes(), StandardCharsets.UTF_8)));
+			} catch (IOException e) {
+				throw new UncheckedIOException(e);
+			}
+		}
+		return List.copyOf(parsed);
 	}
 
 	/** The standard messages alone. */
@@ -49,25 +82,82 @@ public final class StandardMessages {
 		return MessageCatalog.of(files());
 	}
 
+	/** {@link #merge(List)}'s catalog. */
+	public static MessageCatalog catalog(List<Path> folders) {
+		return merge(folders).catalog();
+	}
+
 	/**
 	 * The standard messages and every {@code *.proto} under the given folders (a user's
 	 * {@code messages/} folder, say). Files are named relative to their folder, so imports
-	 * between them resolve as protoc would with that folder on its path.
+	 * between them resolve as protoc would with that folder on its path. A top-level message or
+	 * enum that a folder's file defines under the full name of a standard one replaces it.
 	 */
-	public static MessageCatalog catalog(List<Path> folders) {
-		List<ProtoFile> files = new ArrayList<>(files());
+	public static Merged merge(List<Path> folders) {
+		return merge(folders, Set.of());
+	}
+
+	/**
+	 * {@link #merge(List)} without some of the folders' files (absolute, normalized paths): what
+	 * a build that leaves those files out has.
+	 */
+	public static Merged merge(List<Path> folders, Set<Path> leftOut) {
+		List<ProtoFile> user = new ArrayList<>();
+		Map<String, Path> defined = new HashMap<>();
 		for (Path folder : folders) {
 			if (!Files.isDirectory(folder)) {
 				continue;
 			}
 			try (Stream<Path> walk = Files.walk(folder)) {
 				for (Path file : walk.filter(p -> p.toString().endsWith(".proto") && Files.isRegularFile(p)).sorted().toList()) {
-					files.add(ProtoParser.parse(folder.relativize(file), Files.readString(file, StandardCharsets.UTF_8)));
+					if (leftOut.contains(file.toAbsolutePath().normalize())) {
+						continue;
+					}
+					ProtoFile parsed = ProtoParser.parse(folder.relativize(file), Files.readString(file, StandardCharsets.UTF_8));
+					user.add(parsed);
+					parsed.messages().forEach(type -> defined.putIfAbsent(type.fullName(), file));
+					parsed.enums().forEach(type -> defined.putIfAbsent(type.fullName(), file));
 				}
 			} catch (IOException e) {
 				throw new UncheckedIOException(e);
 			}
 		}
-		return MessageCatalog.of(files);
+		if (user.isEmpty()) {
+			return new Merged(catalog(), List.of());
+		}
+		List<Replacement> replacements = new ArrayList<>();
+		// Linking a catalog resolves the field types of its files in place: the shared standard
+		// files must never see a user's types, so a merge that drops some works on its own copy.
+		List<ProtoFile> base = files().stream().anyMatch(file -> replaces(file, defined)) ? parseStandard() : files();
+		List<ProtoFile> merged = new ArrayList<>();
+		for (ProtoFile file : base) {
+			List<MessageType> messages = new ArrayList<>();
+			List<EnumType> enums = new ArrayList<>();
+			for (MessageType type : file.messages()) {
+				keep(type, file, defined, messages, replacements);
+			}
+			for (EnumType type : file.enums()) {
+				keep(type, file, defined, enums, replacements);
+			}
+			merged.add(messages.size() == file.messages().size() && enums.size() == file.enums().size() ? file
+					: new ProtoFile(file.file(), file.syntax(), file.packageName(), file.imports(), messages, enums, file.problems()));
+		}
+		merged.addAll(user);
+		return new Merged(MessageCatalog.of(merged), List.copyOf(replacements));
+	}
+
+	private static boolean replaces(ProtoFile file, Map<String, Path> defined) {
+		return file.messages().stream().anyMatch(type -> defined.containsKey(type.fullName()))
+				|| file.enums().stream().anyMatch(type -> defined.containsKey(type.fullName()));
+	}
+
+	private static <T extends ProtoType> void keep(T type, ProtoFile file, Map<String, Path> defined, List<T> kept,
+			List<Replacement> replacements) {
+		Path replacement = defined.get(type.fullName());
+		if (replacement == null) {
+			kept.add(type);
+		} else {
+			replacements.add(new Replacement(type.fullName(), file.file(), replacement));
+		}
 	}
 }

@@ -110,7 +110,7 @@ public final class GenerationPlan {
 		for (String message : messages) {
 			catalog.message(message).ifPresent(type -> {
 				String file = type.file() == null ? "" : type.file().toString().replace('\\', '/');
-				if (!StandardMessages.FILES.contains(file) && file.endsWith(".proto")) {
+				if (!StandardMessages.isStandard(type.file()) && file.endsWith(".proto")) {
 					headers.add(file.substring(0, file.length() - ".proto".length()) + ".pb.h");
 				}
 			});
