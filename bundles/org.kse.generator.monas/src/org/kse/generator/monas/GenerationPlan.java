@@ -42,11 +42,11 @@ public final class GenerationPlan {
 	private final List<PlannedTransition> transitions = new ArrayList<>();
 
 	private final MessageCatalog catalog;
-	private final List<String> userProtos;
+	private final TreeMessages tree;
 
-	private GenerationPlan(Model model, MessageCatalog catalog, List<String> userProtos) {
+	private GenerationPlan(Model model, MessageCatalog catalog, TreeMessages tree) {
 		this.catalog = catalog;
-		this.userProtos = userProtos;
+		this.tree = tree;
 		this.modelName = model.getName() == null ? model.getNodes().get(0).getName() : model.getName();
 		this.className = CppNames.identifier(modelName);
 		this.root = model.getNodes().get(0);
@@ -89,26 +89,27 @@ public final class GenerationPlan {
 	}
 
 	public static GenerationPlan of(Model model) {
-		return new GenerationPlan(model, StandardMessages.catalog(), List.of());
+		return new GenerationPlan(model, StandardMessages.catalog(), TreeMessages.NONE);
 	}
 
-	public static GenerationPlan of(Model model, MessageCatalog catalog, List<String> userProtos) {
-		return new GenerationPlan(model, catalog, userProtos);
+	public static GenerationPlan of(Model model, MessageCatalog catalog, TreeMessages tree) {
+		return new GenerationPlan(model, catalog, tree);
 	}
 
-	/** The user's .proto files (relative to the source tree's messages folder) that the build compiles. */
-	public List<String> userProtos() {
-		return userProtos;
+	/** The source tree's own .proto files, as the generated CMake builds them. */
+	public TreeMessages tree() {
+		return tree;
 	}
 
 	/**
 	 * Headers of the user's message types among {@code messages}: {@code <File>.pb.h} of
-	 * each type not in the standard set (the standard set comes with kse/messages/all.h).
+	 * each type not in the standard set (the standard set comes with kse/messages/all.h). A
+	 * standard type that the tree defines again is the runtime's in C++ (see {@link TreeMessages}).
 	 */
 	public List<String> userHeaders(java.util.Collection<String> messages) {
 		java.util.TreeSet<String> headers = new java.util.TreeSet<>();
 		for (String message : messages) {
-			catalog.message(message).ifPresent(type -> {
+			catalog.message(message).filter(type -> !tree.replaced().contains(type.fullName())).ifPresent(type -> {
 				String file = type.file() == null ? "" : type.file().toString().replace('\\', '/');
 				if (!StandardMessages.isStandard(type.file()) && file.endsWith(".proto")) {
 					headers.add(file.substring(0, file.length() - ".proto".length()) + ".pb.h");

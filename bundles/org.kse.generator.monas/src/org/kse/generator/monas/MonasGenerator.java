@@ -8,7 +8,11 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.HashSet;
 import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 import org.eclipse.emf.common.util.Diagnostic;
@@ -43,8 +47,12 @@ public final class MonasGenerator {
 	/** The folder of a source tree that holds the user's own .proto files. */
 	public static final String MESSAGES_FOLDER = "messages";
 
-	/** What a generation did, by path relative to the source folder. */
-	public record Report(List<Path> written, List<Path> unchanged, List<Path> kept, List<Path> removed) {
+	/**
+	 * What a generation did, by path relative to the source folder; which standard messages the
+	 * tree's own .proto files replaced; and warnings worded as diagnostics ({@code label (name): message}).
+	 */
+	public record Report(List<Path> written, List<Path> unchanged, List<Path> kept, List<Path> removed,
+			List<StandardMessages.Replacement> replacements, List<String> warnings) {
 	}
 
 	/** Reports each step of a long generation: step of total, and what it is doing. */
@@ -84,7 +92,8 @@ public final class MonasGenerator {
 		Path root = sourceFolder.toAbsolutePath().normalize();
 		List<Path> messageFolders = new ArrayList<>(options.messageFolders());
 		messageFolders.add(root.resolve(MESSAGES_FOLDER));
-		MessageCatalog catalog = StandardMessages.catalog(messageFolders);
+		StandardMessages.Merged messages = StandardMessages.merge(messageFolders);
+		MessageCatalog catalog = messages.catalog();
 		List<String> errors = new ArrayList<>();
 		for (Diagnostic diagnostic : ModelValidation.validate(model, catalog).getChildren()) {
 			if (diagnostic.getSeverity() == Diagnostic.ERROR) {
@@ -95,7 +104,7 @@ public final class MonasGenerator {
 			throw new ModelHasErrorsException(errors);
 		}
 		progress.step(2, 3, "planning the C++ of " + model.getName());
-		GenerationPlan plan = GenerationPlan.of(model, catalog, userProtos(root.resolve(MESSAGES_FOLDER)));
+		GenerationPlan plan = GenerationPlan.of(model, catalog, TreeMessages.of(root.resolve(MESSAGES_FOLDER), messages.replacements()));
 		Map<Path, String> owned = new LinkedHashMap<>();
 		Path chart = Path.of("statecharts", plan.className());
 		owned.put(chart.resolve(plan.className() + ".h"), MonasTemplates.statechartHeader(plan));
@@ -132,18 +141,32 @@ public final class MonasGenerator {
 			write(root, folder.resolve("CMakeLists.txt"), MonasTemplates.activityCmake(plan, name, inputs));
 			written.addAll(List.of(folder.resolve(name + ".h"), folder.resolve(name + ".cpp"), folder.resolve("CMakeLists.txt")));
 		}
-		return new Report(written, unchanged, kept, removed);
+		return new Report(written, unchanged, kept, removed, messages.replacements(), runtimeMismatches(model, messageFolders, messages));
 	}
 
-	/** The user's .proto files of the source tree, relative to its messages folder, sorted. */
-	private static List<String> userProtos(Path folder) throws IOException {
-		if (!Files.isDirectory(folder)) {
+	private static final Pattern DIAGNOSTIC = Pattern.compile("(?s)(.*?\\): )(expression \\d+:\\d+: )?(.*)");
+
+	/**
+	 * What holds against the tree's own definition of a standard message but not against the
+	 * runtime's, which the generated C++ is compiled with (see {@link TreeMessages}): that C++
+	 * would not compile, and saying so now beats a compiler error about protobuf accessors.
+	 */
+	private static List<String> runtimeMismatches(Model model, List<Path> folders, StandardMessages.Merged messages) {
+		if (messages.replacements().isEmpty()) {
 			return List.of();
 		}
-		try (Stream<Path> walk = Files.walk(folder)) {
-			return walk.filter(p -> p.toString().endsWith(".proto") && Files.isRegularFile(p))
-					.map(p -> folder.relativize(p).toString().replace('\\', '/')).sorted().toList();
+		Set<Path> replacing = new HashSet<>();
+		messages.replacements().forEach(replacement -> replacing.add(replacement.file().toAbsolutePath().normalize()));
+		MessageCatalog runtime = StandardMessages.merge(folders, replacing).catalog();
+		List<String> warnings = new ArrayList<>();
+		for (Diagnostic diagnostic : ModelValidation.validate(model, runtime).getChildren()) {
+			if (diagnostic.getSeverity() == Diagnostic.ERROR) {
+				Matcher parts = DIAGNOSTIC.matcher(diagnostic.getMessage());
+				warnings.add(parts.matches() ? parts.group(1) + (parts.group(2) == null ? "" : parts.group(2)) + "the generated C++ will not compile: "
+						+ parts.group(3) + " in the KSE runtime's messages, which it is built with" : diagnostic.getMessage());
+			}
 		}
+		return warnings;
 	}
 
 	/** Writes only when the content differs; true when the file was written. */

@@ -242,18 +242,32 @@ class MonasTemplates {
 		add_library(statechart_«plan.className» OBJECT «plan.className».cpp)
 		target_include_directories(statechart_«plan.className» PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 		target_link_libraries(statechart_«plan.className» PUBLIC kse::runtime)
-		«IF !plan.userProtos.empty»
+		«IF !plan.tree.compiled.empty || !plan.tree.replacing.empty»
 
 			# the source tree's own messages (messages/*.proto)
-			if(NOT TARGET kse_user_messages)
-				kse_add_messages(kse_user_messages
-					PROTOS
-						«FOR proto : plan.userProtos»
-							${CMAKE_CURRENT_SOURCE_DIR}/../../messages/«proto»
-						«ENDFOR»
-					IMPORT_DIRS ${CMAKE_CURRENT_SOURCE_DIR}/../../messages)
-			endif()
-			target_link_libraries(statechart_«plan.className» PUBLIC kse_user_messages)
+			«FOR replacing : plan.tree.replacing.entrySet»
+				# messages/«replacing.key» is not compiled: it defines «replacing.value.join(', ')» again, which kse::messages
+				# (linked by kse::runtime) holds already, and one program cannot hold two C++ types of one name;
+				# the code uses the runtime's «IF replacing.value.size == 1»definition«ELSE»definitions«ENDIF».
+			«ENDFOR»
+			«IF !plan.tree.compiled.empty || !plan.tree.alongside.empty»
+				if(NOT TARGET kse_user_messages)
+					«FOR mixed : plan.tree.alongside.entrySet»
+						message(FATAL_ERROR "messages/«mixed.key» defines «plan.tree.replacing.get(mixed.key).join(', ')», which the KSE runtime's messages define already, next to «mixed.value.join(', ')»: move «IF mixed.value.size == 1»that type«ELSE»those types«ENDIF» into a .proto file of «IF mixed.value.size == 1»its«ELSE»their«ENDIF» own and generate again")
+					«ENDFOR»
+					«IF !plan.tree.compiled.empty»
+						kse_add_messages(kse_user_messages
+							PROTOS
+								«FOR proto : plan.tree.compiled»
+									${CMAKE_CURRENT_SOURCE_DIR}/../../messages/«proto»
+								«ENDFOR»
+							IMPORT_DIRS ${CMAKE_CURRENT_SOURCE_DIR}/../../messages)
+					«ENDIF»
+				endif()
+			«ENDIF»
+			«IF !plan.tree.compiled.empty»
+				target_link_libraries(statechart_«plan.className» PUBLIC kse_user_messages)
+			«ENDIF»
 		«ENDIF»
 	'''
 
