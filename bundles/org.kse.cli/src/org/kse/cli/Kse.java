@@ -40,7 +40,7 @@ public final class Kse {
 			commands:
 			  transform <formula> [-o model.stct] [--name NAME]
 			                      turn liveness formulas into a statechart model
-			  validate <model.stct> [--messages DIR]
+			  validate <model.stct> [<source-folder>] [--messages DIR]
 			                      check a model against the statechart rules
 			  label <model.stct> [-o out.stct]
 			                      renumber labels and rename states and transitions
@@ -66,12 +66,13 @@ public final class Kse {
 			  -q, --quiet         no progress lines""";
 
 	private static final String VALIDATE_HELP = """
-			usage: kse validate <model.stct> [--messages DIR]...
+			usage: kse validate <model.stct> [<source-folder>] [--messages DIR]...
 
 			Checks a statechart against the KSE rules and the transition-expression grammar;
-			topics, message types and fields are checked against the standard messages and the
-			.proto files under each --messages folder.
-			Prints one diagnostic per line as 'file: label (name): message'.
+			topics, message types and fields are checked against the standard messages, the
+			source folder's messages/*.proto (as kse generate reads them: a message defined
+			there replaces the standard one of the same name) and each --messages folder.
+			Prints one diagnostic per line as 'file: label (name): severity: message'.
 			Exit code 0 when the model has no error, 1 when it has errors.""";
 
 	private static final String LABEL_HELP = """
@@ -90,7 +91,9 @@ public final class Kse {
 			activities/<Activity>/ skeletons. Activities that exist are never overwritten; files
 			whose content would not change are not touched. A model with errors is refused.
 			Messages are checked against the standard set, <source-folder>/messages/*.proto
-			(compiled by the generated CMake) and each --messages folder.
+			(compiled by the generated CMake) and each --messages folder. A message the source
+			folder defines again replaces the standard one in the checks (a note says which);
+			the C++ still uses the runtime's, which every program links.
 			  --logger     conditions print their result when evaluated
 			  -q, --quiet  no progress lines""";
 
@@ -220,11 +223,25 @@ public final class Kse {
 			out.println(VALIDATE_HELP);
 			return OK;
 		}
-		Path file = options.single("model file");
+		if (options.positional.isEmpty() || options.positional.size() > 2) {
+			throw new UsageException(options.positional.isEmpty() ? "missing model file" : "expected a model file and at most one source folder");
+		}
+		Path file = Path.of(options.positional.get(0));
+		List<Path> folders = new ArrayList<>(options.paths("--messages"));
+		Path sourceFolder = null;
+		if (options.positional.size() == 2) {
+			sourceFolder = Path.of(options.positional.get(1));
+			if (!Files.isDirectory(sourceFolder)) {
+				throw new NoSuchFileException(sourceFolder + " (not a folder)");
+			}
+			folders.add(sourceFolder.resolve(MonasGenerator.MESSAGES_FOLDER));
+		}
 		Model model = StatechartResources.load(file);
+		StandardMessages.Merged messages = StandardMessages.merge(folders);
+		note(file, messages.replacements(), sourceFolder, false);
 		int errors = 0;
 		int warnings = 0;
-		for (Diagnostic diagnostic : ModelValidation.validate(model, StandardMessages.catalog(options.paths("--messages"))).getChildren()) {
+		for (Diagnostic diagnostic : ModelValidation.validate(model, messages.catalog()).getChildren()) {
 			boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
 			errors += error ? 1 : 0;
 			warnings += error ? 0 : 1;
@@ -265,6 +282,10 @@ public final class Kse {
 		try {
 			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages")),
 					(step, steps, what) -> progress(step, steps, what));
+			note(file, report.replacements(), folder, true);
+			for (String warning : report.warnings()) {
+				err.println(file + ": " + withSeverity(warning, "warning"));
+			}
 			out.println("generated " + model.getName() + " into " + folder + ": " + report.written().size() + " written, "
 					+ report.unchanged().size() + " unchanged, " + report.kept().size() + " activities kept"
 					+ (report.removed().isEmpty() ? "" : ", " + report.removed().size() + " stale removed"));
@@ -369,6 +390,37 @@ public final class Kse {
 			Thread.currentThread().interrupt();
 		}
 		return OK;
+	}
+
+	/**
+	 * One line naming the standard messages that the user's .proto files replaced, and by which
+	 * file: a migrated Monas tree brings its own, and its users should know which definitions
+	 * their expressions were checked against.
+	 */
+	private void note(Path model, List<StandardMessages.Replacement> replacements, Path sourceFolder, boolean generated) {
+		if (replacements.isEmpty()) {
+			return;
+		}
+		java.util.Map<Path, List<String>> byFile = new java.util.LinkedHashMap<>();
+		for (StandardMessages.Replacement replacement : replacements) {
+			byFile.computeIfAbsent(shown(replacement.file(), sourceFolder), key -> new ArrayList<>()).add(replacement.type());
+		}
+		List<String> parts = new ArrayList<>();
+		byFile.forEach((path, types) -> parts.add(String.join(", ", types) + " by " + path));
+		err.println(model + ": note: built-in messages replaced by the source tree's own: " + String.join("; ", parts)
+				+ (generated ? " (the generated C++ uses the runtime's definitions: see the statechart's CMakeLists.txt)" : ""));
+	}
+
+	/** A file under the source folder as the user named that folder, else as it is. */
+	private static Path shown(Path file, Path sourceFolder) {
+		if (sourceFolder != null) {
+			Path absolute = sourceFolder.toAbsolutePath().normalize();
+			Path normalized = file.toAbsolutePath().normalize();
+			if (normalized.startsWith(absolute)) {
+				return sourceFolder.resolve(absolute.relativize(normalized));
+			}
+		}
+		return file;
 	}
 
 	/** "label (name): message" becomes "label (name): severity: message". */

@@ -116,9 +116,13 @@ public class GenerateHandler extends AbstractHandler {
 								generation.worked(1);
 							});
 					folder.refreshLocal(IResource.DEPTH_INFINITE, progress.split(10));
-					return new Status(IStatus.OK, "org.kse.ui", "Generated " + model.getName() + " into " + folder.getFullPath() + ": "
-							+ report.written().size() + " written, " + report.unchanged().size() + " unchanged, " + report.kept().size()
-							+ " activities kept" + (report.removed().isEmpty() ? "" : ", " + report.removed().size() + " stale removed"));
+					String replaced = report.replacements().isEmpty() ? ""
+							: "; the source folder's messages replace the built-in " + String.join(", ",
+									report.replacements().stream().map(org.kse.messages.StandardMessages.Replacement::type).toList());
+					return new Status(report.warnings().isEmpty() ? IStatus.OK : IStatus.WARNING, "org.kse.ui", "Generated " + model.getName() + " into "
+							+ folder.getFullPath() + ": " + report.written().size() + " written, " + report.unchanged().size() + " unchanged, "
+							+ report.kept().size() + " activities kept" + (report.removed().isEmpty() ? "" : ", " + report.removed().size() + " stale removed")
+							+ replaced + (report.warnings().isEmpty() ? "" : ". " + String.join("; ", report.warnings())));
 				} catch (IOException e) {
 					return Status.error("cannot generate " + file.getFullPath() + ": " + e.getMessage(), e);
 				} catch (MonasGenerator.ModelHasErrorsException e) {

@@ -381,6 +381,104 @@ class CommandLineTest {
 		assertFalse(Files.exists(directory.resolve("other")));
 	}
 
+	// ------------------------------------------------------------------ a Monas tree and events
+
+	/** tests/data/monas-tree copied, since generating writes into its source folder. */
+	private Path monasTree() throws IOException {
+		Path original = Models.LEGACY.getParent().resolve("monas-tree");
+		Path copy = directory.resolve("monas-tree");
+		try (Stream<Path> walk = Files.walk(original)) {
+			for (Path file : walk.filter(Files::isRegularFile).toList()) {
+				Path target = copy.resolve(original.relativize(file).toString());
+				Files.createDirectories(target.getParent());
+				Files.copy(file, target);
+			}
+		}
+		return copy;
+	}
+
+	@Test
+	void generateMigratesAMonasTreeAndNotesTheBuiltInsItsMessagesReplace() throws IOException {
+		Path tree = monasTree();
+		Path model = tree.resolve("models/Localizer.stct");
+		Path source = tree.resolve("src");
+		Run run = kse("generate", "-q", model.toString(), source.toString());
+		assertEquals(Kse.OK, run.code(), run::all);
+		assertTrue(run.out().contains("generated Localizer into " + source), run::all);
+		List<String> notes = run.err().lines().filter(line -> line.contains("note:")).toList();
+		assertEquals(List.of(model + ": note: built-in messages replaced by the source tree's own: GameStateMessage by "
+				+ source.resolve("messages/Gamecontroller.proto")
+				+ " (the generated C++ uses the runtime's definitions: see the statechart's CMakeLists.txt)"), notes, run::all);
+		assertFalse(run.err().contains("error"), run::all);
+		assertTrue(run.err().contains(model + ": 0.3->0.4 (Approach_TO_0.4): warning: expression 1:36: the generated C++ will not compile:"
+				+ " 'GameStateMessage' has no field 'penalty_secs_left' in the KSE runtime's messages, which it is built with"), run::all);
+		assertTrue(Files.isRegularFile(source.resolve("statecharts/Localizer/Localizer.cpp")));
+		assertTrue(Files.readString(source.resolve("activities/Localize/Localize.cpp")).contains("done.set_moveon(1);"), "the tree's own activity is kept");
+		assertTrue(Files.isRegularFile(source.resolve("activities/Approach/Approach.cpp")), "a skeleton for the missing one");
+	}
+
+	@Test
+	void validateChecksAgainstTheSourceFoldersMessagesWhenGivenOne() throws IOException {
+		Path tree = monasTree();
+		Path model = tree.resolve("models/Localizer.stct");
+		Run alone = kse("validate", model.toString());
+		assertEquals(Kse.INVALID, alone.code(), alone::all);
+		assertTrue(alone.out().contains(model + ": 0.2->0.3 (Localize_TO_Approach): error: expression 1:17: unknown message type 'LocalizeDone'"), alone::all);
+		assertTrue(alone.out().contains(model + ": 0.3->0.4 (Approach_TO_0.4): error: expression 1:36: 'GameStateMessage' has no field 'penalty_secs_left'"),
+				alone::all);
+		assertFalse(alone.err().contains("note:"), alone::all);
+
+		Run withTree = kse("validate", model.toString(), tree.resolve("src").toString());
+		assertEquals(Kse.OK, withTree.code(), withTree::all);
+		assertTrue(withTree.err().contains(model + ": 0 errors, 0 warnings"), withTree::all);
+		assertTrue(withTree.err().contains(model + ": note: built-in messages replaced by the source tree's own: GameStateMessage by "
+				+ tree.resolve("src/messages/Gamecontroller.proto") + "\n"), withTree::all);
+
+		Run missing = kse("validate", model.toString(), tree.resolve("nowhere").toString());
+		assertEquals(Kse.FAILED, missing.code(), missing::all);
+		assertTrue(missing.err().contains(tree.resolve("nowhere") + " (not a folder)"), missing::all);
+	}
+
+	@Test
+	void misspeltNamesInAMonasTreesModelGetTheNearestKnownOne() throws IOException {
+		Path tree = monasTree();
+		Path model = tree.resolve("models/Localizer.stct");
+		Files.writeString(model, Files.readString(model).replace("[worldstate.State.GameStateMessage.penalty", "[wordstate.State.GameStateMessage.penalty")
+				.replace("[behavior.State.LocalizeDone", "[behavior.State.LocaliseDone"));
+		Run run = kse("validate", model.toString(), tree.resolve("src").toString());
+		assertEquals(Kse.INVALID, run.code(), run::all);
+		assertEquals(List.of(model + ": 0.2->0.3 (Localize_TO_Approach): error: expression 1:17: unknown message type 'LocaliseDone'; did you mean 'LocalizeDone'?",
+				model + ": 0.3->0.4 (Approach_TO_0.4): error: expression 1:2: unknown topic 'wordstate'; did you mean 'worldstate'?"), run.out().lines().toList(),
+				run::all);
+		Run generate = kse("generate", "-q", model.toString(), tree.resolve("src").toString());
+		assertEquals(Kse.INVALID, generate.code(), generate::all);
+		assertTrue(generate.err().contains("did you mean 'worldstate'?"), generate::all);
+	}
+
+	@Test
+	void anEventIsAPositionedErrorAndGenerationRefusesIt() throws IOException {
+		Model model = Models.simple();
+		model.getTransitions().get(1).setTE("[behavior.State.FallMessage==NULL ||\n behavior.State.FallMessage.fall()==0]");
+		model.getTransitions().get(0).setTE("\n  BallSeen[behavior.State.HeadToBMessage.ballfound()>0]/TimeoutAction.behavior.100");
+		Path file = directory.resolve("events.stct");
+		StatechartResources.save(model, file);
+		String transition = model.getTransitions().get(0).getSource().getLabel() + "->" + model.getTransitions().get(0).getTarget().getLabel() + " ("
+				+ model.getTransitions().get(0).getName() + ")";
+
+		Run validate = kse("validate", file.toString());
+		assertEquals(Kse.INVALID, validate.code(), validate::all);
+		assertEquals(List.of(file + ": " + transition + ": error: expression 2:3: events are not supported: the engine never raises 'BallSeen', so this"
+				+ " transition would never fire (as in the original KSE); say in the condition what to wait for instead, as in"
+				+ " [behavior.Signal.FallMessage.fall()!=0]"), validate.out().lines().toList(), validate::all);
+
+		Path source = directory.resolve("src");
+		Run generate = kse("generate", file.toString(), source.toString());
+		assertEquals(Kse.INVALID, generate.code(), generate::all);
+		assertTrue(generate.err().contains(file + ": " + transition + ": error: expression 2:3: events are not supported"), generate::all);
+		assertTrue(generate.err().contains("nothing generated"), generate::all);
+		assertFalse(Files.exists(source), "nothing written");
+	}
+
 	@Test
 	void versionNamesKseAndWhatItRunsOn() {
 		Run run = kse("--version");
