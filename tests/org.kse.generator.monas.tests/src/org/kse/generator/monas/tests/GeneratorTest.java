@@ -257,6 +257,19 @@ class GeneratorTest {
 	}
 
 	@Test
+	void aModelWithAnEventIsRefusedInsteadOfGeneratingATransitionThatNeverFires(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		model.getTransitions().get(5).setTE("Fallen[worldstate.Signal.FallMessage.fall()!=0]");
+		ModelHasErrorsException refused = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertEquals(List.of("0.4->0.5 (Together_TO_0.5): expression 1:1: events are not supported: the engine never raises 'Fallen', so this"
+				+ " transition would never fire (as in the original KSE); say in the condition what to wait for instead, as in"
+				+ " [behavior.Signal.FallMessage.fall()!=0]"), refused.errors());
+		try (Stream<Path> walk = Files.list(folder)) {
+			assertEquals(List.of(), walk.toList(), "nothing written");
+		}
+	}
+
+	@Test
 	void staleTransitionClassesAreRemoved(@TempDir Path folder) throws Exception {
 		Model model = allKinds();
 		MonasGenerator.generate(model, folder, Options.DEFAULT);
