@@ -77,7 +77,8 @@ class LivenessGrammarTest {
 			"a = B.C", "a = B . C . D", "a = B|C", "a = B | C | D", "a = B||C", "a = B || C || D", //
 			"a = B*", "a = B+", "a = B~", "a = [B]", "a = (B)", "a = |B~|3", "a = |(B.C)~|12", //
 			"a = (B.[C|D]*)||(E+ . |F~|2)", "a = ((((B))))", "a = [[B]]", "a = (B|C)+ . [D*] . E~", //
-			"a = Xyz_1.Abc_2", "a = B . (C | D) . (E || F)" })
+			"a = Xyz_1.Abc_2", "a = B . (C | D) . (E || F)", //
+			"a = B+~", "a = |B~|2+", "a = [B]+~", "a = B*+", "a = (B.C)+~", "a = B~~", "a = |(B|C)~|2*", "a = |[B]~|2 . C+*~" })
 	void everyOperatorParsesWithoutIssues(String text) {
 		FormulaLoader.Result result = loadClean(text);
 		assertEquals(1, result.file().getFormulas().size());
@@ -110,6 +111,27 @@ class LivenessGrammarTest {
 		Replication replication = assertInstanceOf(Replication.class, expression.getTerms().get(5));
 		assertEquals(4, replication.getCount());
 		assertEquals("G", assertInstanceOf(Reference.class, replication.getOperand()).getName());
+	}
+
+	@Test
+	void eachSuffixAppliesToTheTermBuiltBeforeIt() {
+		Expression expression = loadClean("a = B+~ . |C~|2+ . [D]*+~").file().getFormulas().get(0).getExpression();
+		Repetition forever = assertInstanceOf(Repetition.class, expression.getTerms().get(0));
+		assertEquals(RepetitionKind.FOREVER, forever.getKind());
+		Repetition oneOrMore = assertInstanceOf(Repetition.class, forever.getOperand());
+		assertEquals(RepetitionKind.ONE_OR_MORE, oneOrMore.getKind());
+		assertEquals("B", assertInstanceOf(Reference.class, oneOrMore.getOperand()).getName());
+
+		Repetition repeatedCopies = assertInstanceOf(Repetition.class, expression.getTerms().get(1));
+		assertEquals(RepetitionKind.ONE_OR_MORE, repeatedCopies.getKind());
+		assertEquals(2, assertInstanceOf(Replication.class, repeatedCopies.getOperand()).getCount());
+
+		Repetition outer = assertInstanceOf(Repetition.class, expression.getTerms().get(2));
+		Repetition middle = assertInstanceOf(Repetition.class, outer.getOperand());
+		Repetition inner = assertInstanceOf(Repetition.class, middle.getOperand());
+		assertEquals(List.of(RepetitionKind.FOREVER, RepetitionKind.ONE_OR_MORE, RepetitionKind.ZERO_OR_MORE),
+				List.of(outer.getKind(), middle.getKind(), inner.getKind()));
+		assertInstanceOf(Option.class, inner.getOperand());
 	}
 
 	@Test
@@ -199,7 +221,9 @@ class LivenessGrammarTest {
 	@ParameterizedTest
 	@CsvSource(delimiter = ';', value = { //
 			"B*;B_zero_or_more_times_", "B~;B_forever_", "B||C;B_parallel_C", "B.C;B_sequence_C", "(B|C);_open_group_B_or_C_close_group_",
-			"|B~|3;_or_B_forever__or_3" })
+			"|B~|3;_or_B_forever__or_3", "B+~;B_one_or_more_times__forever_",
+			"|B~|2+;_or_B_forever__or_2_one_or_more_times_", "[B]+~;_open_option_B_close_option__one_or_more_times__forever_",
+			"(B.C)+~;_open_group_B_sequence_C_close_group__one_or_more_times__forever_" })
 	void stateNameOfEveryOperator(String expression, String stateName) {
 		FormulaFile file = loadClean("a = " + expression).file();
 		assertEquals(stateName, Formulas.stateName(file.getFormulas().get(0).getExpression()));

@@ -98,19 +98,21 @@ class RandomFormulaPropertyTest {
 				case 2 -> "(" + expression(capability, depth + 1) + ")" + suffix(false);
 				case 3 -> "[" + expression(capability, depth + 1) + "]";
 				case 4 -> "Act" + activities++ + suffix(true);
-				case 5 -> "|" + "Act" + activities++ + "~|" + (1 + random.nextInt(3));
+				case 5 -> "|" + "Act" + activities++ + "~|" + (1 + random.nextInt(3)) + suffix(false);
 				default -> "(" + expression(capability, depth + 1) + ")" + suffix(true);
 			};
 		}
 
+		/** None, one, or (one time in four) a chain of two, which applies the second to the first. */
 		private String suffix(boolean required) {
 			int choice = random.nextInt(required ? 3 : 4);
-			return switch (choice) {
+			String suffix = switch (choice) {
 				case 0 -> "*";
 				case 1 -> "+";
 				case 2 -> "~";
 				default -> "";
 			};
+			return !suffix.isEmpty() && random.nextInt(4) == 0 ? suffix + suffix(true) : suffix;
 		}
 	}
 }

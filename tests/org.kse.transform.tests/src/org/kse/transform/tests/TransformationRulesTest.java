@@ -144,6 +144,68 @@ class TransformationRulesTest {
 						0.2.2.3 END
 						0.3 END
 						=> 0.1->0.2 0.2->0.3 0.2.1.1->0.2.1.2 0.2.1.2->0.2.1.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3"""),
+				// suffixes chain: each applies to the term built by the one before
+				Arguments.of("a = B+~", """
+						0 OR a
+						0.1 START
+						0.2 OR B_one_or_more_times_
+						0.2.1 START
+						0.2.2 BASIC B
+						0.2.3 END
+						=> 0.1->0.2 0.2->0.2 0.2.1->0.2.2 0.2.2->0.2.2 0.2.2->0.2.3"""),
+				Arguments.of("a = |B~|2+", """
+						0 OR a
+						0.1 START
+						0.2 AND _or_B_forever__or_2
+						0.2.1 OR
+						0.2.1.1 START
+						0.2.1.2 BASIC B
+						0.2.1.3 END
+						0.2.2 OR
+						0.2.2.1 START
+						0.2.2.2 BASIC B
+						0.2.2.3 END
+						0.3 END
+						=> 0.1->0.2 0.2->0.2 0.2->0.3 0.2.1.1->0.2.1.2 0.2.1.2->0.2.1.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3"""),
+				Arguments.of("a = [B]+~", """
+						0 OR a
+						0.1 START
+						0.2 OR _open_option_B_close_option__one_or_more_times_
+						0.2.1 START
+						0.2.2 OR _open_option_B_close_option_
+						0.2.2.1 START
+						0.2.2.2 CONDITION
+						0.2.2.3 BASIC B
+						0.2.2.4 END
+						0.2.3 END
+						=> 0.1->0.2 0.2->0.2 0.2.1->0.2.2 0.2.2->0.2.2 0.2.2->0.2.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3 0.2.2.2->0.2.2.4 0.2.2.3->0.2.2.4"""),
+				Arguments.of("a = B*+", """
+						0 OR a
+						0.1 START
+						0.2 OR B_zero_or_more_times_
+						0.2.1 START
+						0.2.2 CONDITION
+						0.2.3 BASIC B
+						0.2.4 END
+						0.3 END
+						=> 0.1->0.2 0.2->0.2 0.2->0.3 0.2.1->0.2.2 0.2.2->0.2.3 0.2.3->0.2.3 0.2.2->0.2.4 0.2.3->0.2.4"""),
+				Arguments.of("a = X.(B.C)+~", """
+						0 OR a
+						0.1 START
+						0.2 BASIC X
+						0.3 OR _open_group_B_sequence_C_close_group__one_or_more_times__forever_
+						0.3.1 START
+						0.3.2 OR _open_group_B_sequence_C_close_group__one_or_more_times_
+						0.3.2.1 START
+						0.3.2.2 OR _open_group_B_sequence_C_close_group_
+						0.3.2.2.1 START
+						0.3.2.2.2 BASIC B
+						0.3.2.2.3 BASIC C
+						0.3.2.2.4 END
+						0.3.2.3 END
+						0.4 END
+						=> 0.1->0.2 0.2->0.3 0.3->0.4 0.3.1->0.3.2 0.3.2->0.3.2 0.3.2.1->0.3.2.2 0.3.2.2->0.3.2.2 0.3.2.2->0.3.2.3 \
+						0.3.2.2.1->0.3.2.2.2 0.3.2.2.2->0.3.2.2.3 0.3.2.2.3->0.3.2.2.4"""),
 				Arguments.of("a = B.C+", """
 						0 OR a
 						0.1 START
