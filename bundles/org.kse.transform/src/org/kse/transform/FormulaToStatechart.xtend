@@ -21,7 +21,8 @@ import org.kse.model.statechart.StatechartFactory
  * Liveness formulas to statechart, by the rules of the original KSE (reference §3):
  * the same labels, node kinds, names, transitions and even the same order of
  * elements in the saved file. Where the original crashed (a lone name or a lone
- * |x~|n on the right side), the expression becomes a sequence of one term.
+ * |x~|n on the right side), the expression becomes a sequence of one term. A name
+ * defined twice means its last definition.
  *
  * Expects a formula file without validation errors (no recursion, no mixed operators).
  */
@@ -34,7 +35,7 @@ class FormulaToStatechart {
 
 	def Model transform(FormulaFile file, String modelName) {
 		capabilities = Formulas.capabilities(file)
-		val rootFormula = Formulas.root(file)
+		val rootFormula = Formulas.rootDefinition(file)
 		model = createModel => [name = modelName ?: file.title ?: rootFormula.name]
 		val root = createNode => [
 			label = "0"

@@ -11,6 +11,9 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.nodemodel.INode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.CheckType;
 import org.kse.liveness.Formulas;
@@ -36,6 +39,7 @@ public class LivenessValidator extends AbstractLivenessValidator {
 	public static final String EMPTY_GROUP = "kse.liveness.emptyGroup";
 	public static final String NO_FORMULA = "kse.liveness.noFormula";
 	public static final String DUPLICATE_DEFINITION = "kse.liveness.duplicateDefinition";
+	public static final String REPLACED_DEFINITION = "kse.liveness.replacedDefinition";
 	public static final String MIXED_OPERATORS = "kse.liveness.mixedOperators";
 	public static final String RECURSIVE_DEFINITION = "kse.liveness.recursiveDefinition";
 	public static final String UNDEFINED_CAPABILITY = "kse.liveness.undefinedCapability";
@@ -82,18 +86,23 @@ public class LivenessValidator extends AbstractLivenessValidator {
 		}
 	}
 
+	/**
+	 * A name defined again replaces its earlier definitions, as in the original tool; each
+	 * replaced one is marked, since the writer may have meant a new name.
+	 */
 	@Check
 	public void checkDuplicateDefinitions(FormulaFile file) {
-		Map<String, Formula> exact = new HashMap<>();
+		Map<String, Formula> inForce = Formulas.capabilities(file);
 		Map<String, Formula> folded = new HashMap<>();
 		for (Formula formula : file.getFormulas()) {
 			String name = formula.getName();
 			if (name == null) {
 				continue;
 			}
-			Formula earlier = exact.putIfAbsent(name, formula);
-			if (earlier != null) {
-				error("'" + name + "' is already defined on line " + line(earlier), formula, Literals.FORMULA__NAME, DUPLICATE_DEFINITION);
+			Formula last = inForce.get(name);
+			if (last != formula) {
+				warning("this definition of '" + name + "' is replaced by the one on line " + line(last), formula, Literals.FORMULA__NAME,
+						REPLACED_DEFINITION);
 				continue;
 			}
 			Formula similar = folded.putIfAbsent(name.toLowerCase(Locale.ROOT), formula);
@@ -154,8 +163,8 @@ public class LivenessValidator extends AbstractLivenessValidator {
 
 	@Check(CheckType.NORMAL)
 	public void checkUnusedCapabilities(FormulaFile file) {
-		Formula root = Formulas.root(file);
-		if (root == null) {
+		Formula root = Formulas.rootDefinition(file);
+		if (root == null || root.getName() == null) {
 			return;
 		}
 		Map<String, Formula> capabilities = Formulas.capabilities(file);
@@ -240,8 +249,8 @@ public class LivenessValidator extends AbstractLivenessValidator {
 		return String.join(" \u2192 ", loop) + " \u2192 " + target;
 	}
 
-	private static int line(Formula formula) {
-		var node = org.eclipse.xtext.nodemodel.util.NodeModelUtils.findActualNodeFor(formula);
+	private static int line(EObject element) {
+		INode node = NodeModelUtils.findActualNodeFor(element);
 		return node == null ? 0 : node.getStartLine();
 	}
 }

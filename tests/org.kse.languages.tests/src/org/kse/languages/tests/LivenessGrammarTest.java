@@ -268,19 +268,53 @@ class LivenessGrammarTest {
 		assertFalse(result.hasErrors(), () -> describe(result.issues()));
 	}
 
-	// ---------------------------------------------------------------- duplicates
+	// ---------------------------------------------------------------- definitions given twice
 
 	@Test
-	void duplicateLeftSideIsAnErrorAtTheSecondDefinition() {
+	void aNameDefinedAgainIsReplacedWithAWarningAtTheReplacedDefinition() {
 		FormulaLoader.Result result = load("a = b\nb = C\nb = D");
-		Issue issue = assertOnlyError(result.issues(), LivenessValidator.DUPLICATE_DEFINITION, 3, 1);
-		assertTrue(issue.getMessage().contains("line 2"), issue.getMessage());
+		Issue issue = assertIssue(result.issues(), Severity.WARNING, LivenessValidator.REPLACED_DEFINITION, 2, 1);
+		assertEquals("this definition of 'b' is replaced by the one on line 3", issue.getMessage());
+		assertEquals(1, result.issues().size(), () -> describe(result.issues()));
+		assertEquals("D", Formulas.text(formula(result.file(), "b").getExpression()));
 	}
 
 	@Test
-	void duplicateRootIsAnErrorAtTheSecondDefinition() {
+	void everyReplacedDefinitionNamesTheLastOne() {
+		FormulaLoader.Result result = load("a = b\nb = C\n\nb = D\nb = E");
+		List<Issue> replaced = result.issues().stream().filter(issue -> LivenessValidator.REPLACED_DEFINITION.equals(issue.getCode())).toList();
+		assertEquals(List.of("2:1 line 5", "4:1 line 5"),
+				replaced.stream().map(issue -> issue.getLineNumber() + ":" + issue.getColumn() + " line "
+						+ issue.getMessage().replaceAll(".*line ", "")).toList(),
+				() -> describe(result.issues()));
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+		assertEquals("E", Formulas.text(formula(result.file(), "b").getExpression()));
+	}
+
+	@Test
+	void theRootDefinedAgainKeepsItsNameAndTakesTheLastExpression() {
 		FormulaLoader.Result result = load("// root\na = B\n\na = C");
-		assertOnlyError(result.issues(), LivenessValidator.DUPLICATE_DEFINITION, 4, 1);
+		Issue issue = assertIssue(result.issues(), Severity.WARNING, LivenessValidator.REPLACED_DEFINITION, 2, 1);
+		assertTrue(issue.getMessage().endsWith("line 4"), issue.getMessage());
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+		assertEquals("a", Formulas.root(result.file()).getName());
+		assertEquals("C", Formulas.text(Formulas.rootDefinition(result.file()).getExpression()));
+	}
+
+	@Test
+	void onlyTheDefinitionInForceCountsForRecursionAndUse() {
+		// the replaced 'b' used itself and 'c'; the one in force uses neither
+		FormulaLoader.Result result = load("a = b\nb = b.c\nb = D\nc = E");
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+		assertIssue(result.issues(), Severity.WARNING, LivenessValidator.REPLACED_DEFINITION, 2, 1);
+		assertIssue(result.issues(), Severity.WARNING, LivenessValidator.UNUSED_CAPABILITY, 4, 1);
+	}
+
+	@Test
+	void aCapabilityUsedOnlyByAReplacedRootIsUnused() {
+		FormulaLoader.Result result = load("a = b\nb = C\na = D");
+		assertIssue(result.issues(), Severity.WARNING, LivenessValidator.UNUSED_CAPABILITY, 2, 1);
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
 	}
 
 	@Test

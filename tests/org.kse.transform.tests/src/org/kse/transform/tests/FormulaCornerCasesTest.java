@@ -9,10 +9,12 @@ import java.util.List;
 import java.util.Set;
 
 import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.xtext.validation.Issue;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.kse.labeling.Labeler;
+import org.kse.liveness.validation.LivenessValidator;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.transform.FormulaTransformation;
@@ -20,7 +22,7 @@ import org.kse.validation.ModelValidation;
 
 /**
  * Formulas the original tool turned into a model although the first rebuild refused them:
- * chained suffixes. What a user checks: the model passes the
+ * chained suffixes, a name defined twice. What a user checks: the model passes the
  * statechart validation of kse validate, and kse label leaves the labels as they were.
  */
 class FormulaCornerCasesTest {
@@ -49,6 +51,20 @@ class FormulaCornerCasesTest {
 		// forever has no END; one-or-more has one
 		assertEquals(List.of("START", "OR"), forever.getChildren().stream().map(Node::getType).toList());
 		assertEquals(List.of("START", "BASIC", "END"), oneOrMore.getChildren().stream().map(Node::getType).toList());
+	}
+
+	@Test
+	void aNameDefinedTwiceIsTransformedFromItsLastDefinition() {
+		FormulaTransformation.Outcome outcome = Statecharts.run("a = b . b\nb = C\nb = D+");
+		assertEquals(List.of(LivenessValidator.REPLACED_DEFINITION), outcome.issues().stream().map(Issue::getCode).toList());
+		Model model = outcome.model();
+		assertNotNull(model);
+		for (String label : List.of("0.2", "0.3")) {
+			Node b = node(model, label);
+			assertEquals("OR b", b.getType() + " " + b.getName());
+			assertEquals("BASIC D", node(model, label + ".2").getType() + " " + node(model, label + ".2").getName());
+		}
+		assertEquals(List.of(), errors(model));
 	}
 
 	private static List<Diagnostic> errors(Model model) {

@@ -206,6 +206,25 @@ class TransformationRulesTest {
 						0.4 END
 						=> 0.1->0.2 0.2->0.3 0.3->0.4 0.3.1->0.3.2 0.3.2->0.3.2 0.3.2.1->0.3.2.2 0.3.2.2->0.3.2.2 0.3.2.2->0.3.2.3 \
 						0.3.2.2.1->0.3.2.2.2 0.3.2.2.2->0.3.2.2.3 0.3.2.2.3->0.3.2.2.4"""),
+				// a name defined again means its last definition, the root's too
+				Arguments.of("a = b\nb = C\nb = D|E", """
+						0 OR a
+						0.1 START
+						0.2 OR b
+						0.2.1 START
+						0.2.2 CONDITION
+						0.2.3 BASIC D
+						0.2.4 BASIC E
+						0.2.5 END
+						0.3 END
+						=> 0.1->0.2 0.2->0.3 0.2.1->0.2.2 0.2.2->0.2.3 0.2.2->0.2.4 0.2.3->0.2.5 0.2.4->0.2.5"""),
+				Arguments.of("a = B\na = C.D", """
+						0 OR a
+						0.1 START
+						0.2 BASIC C
+						0.3 BASIC D
+						0.4 END
+						=> 0.1->0.2 0.2->0.3 0.3->0.4"""),
 				Arguments.of("a = B.C+", """
 						0 OR a
 						0.1 START
