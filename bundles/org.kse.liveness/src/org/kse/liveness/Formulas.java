@@ -55,6 +55,22 @@ public final class Formulas {
 		return capabilities(file).get(root.getName());
 	}
 
+	/**
+	 * The |x~|n that an expression consists of, looking through groups without a suffix
+	 * (they are laid out in place), or null when the expression is anything else.
+	 */
+	public static Replication loneReplication(Expression expression) {
+		Expression level = expression;
+		while (level != null && level.getTerms().size() == 1) {
+			Term term = level.getTerms().get(0);
+			if (term instanceof Replication replication) {
+				return replication;
+			}
+			level = term instanceof Group group ? group.getExpression() : null;
+		}
+		return null;
+	}
+
 	/** Every name referenced anywhere inside the given element, in document order. */
 	public static List<Reference> references(EObject element) {
 		List<Reference> result = new ArrayList<>();

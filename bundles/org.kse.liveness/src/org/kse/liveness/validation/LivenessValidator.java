@@ -46,6 +46,7 @@ public class LivenessValidator extends AbstractLivenessValidator {
 	public static final String UNUSED_CAPABILITY = "kse.liveness.unusedCapability";
 	public static final String DUPLICATE_CHOICE = "kse.liveness.duplicateChoice";
 	public static final String BAD_COUNT = "kse.liveness.badCount";
+	public static final String AND_ROOT = "kse.liveness.andRoot";
 
 	@Check
 	public void checkHasFormula(FormulaFile file) {
@@ -158,6 +159,23 @@ public class LivenessValidator extends AbstractLivenessValidator {
 				warning("'" + name + "' is not defined as a capability, so it becomes an activity (a BASIC state)", reference,
 						Literals.REFERENCE__NAME, UNDEFINED_CAPABILITY);
 			}
+		}
+	}
+
+	/**
+	 * The original made the root of a lone |x~|n the AND state itself, and so do we; but the
+	 * statechart rules want an OR root, so say so while the formula can still be changed.
+	 */
+	@Check
+	public void checkAndRoot(FormulaFile file) {
+		Formula root = Formulas.rootDefinition(file);
+		Replication replication = root == null || root.getName() == null ? null : Formulas.loneReplication(root.getExpression());
+		if (replication != null) {
+			String name = root.getName();
+			String copies = name + "Copies";
+			warning("'" + name + "' is only " + Formulas.text(replication) + ", so the root becomes its AND state, as in the original tool, "
+					+ "and statechart validation will refuse it (the root must be an OR state); to keep an OR root, write '" + name + " = "
+					+ copies + "' and '" + copies + " = " + Formulas.text(replication) + "'", replication, null, AND_ROOT);
 		}
 	}
 

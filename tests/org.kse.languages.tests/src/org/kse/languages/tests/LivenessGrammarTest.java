@@ -75,7 +75,7 @@ class LivenessGrammarTest {
 	@ParameterizedTest
 	@ValueSource(strings = { //
 			"a = B.C", "a = B . C . D", "a = B|C", "a = B | C | D", "a = B||C", "a = B || C || D", //
-			"a = B*", "a = B+", "a = B~", "a = [B]", "a = (B)", "a = |B~|3", "a = |(B.C)~|12", //
+			"a = B*", "a = B+", "a = B~", "a = [B]", "a = (B)", "a = |B~|3 . C", "a = D || |(B.C)~|12", //
 			"a = (B.[C|D]*)||(E+ . |F~|2)", "a = ((((B))))", "a = [[B]]", "a = (B|C)+ . [D*] . E~", //
 			"a = Xyz_1.Abc_2", "a = B . (C | D) . (E || F)", //
 			"a = B+~", "a = |B~|2+", "a = [B]+~", "a = B*+", "a = (B.C)+~", "a = B~~", "a = |(B|C)~|2*", "a = |[B]~|2 . C+*~" })
@@ -221,7 +221,7 @@ class LivenessGrammarTest {
 	@ParameterizedTest
 	@CsvSource(delimiter = ';', value = { //
 			"B*;B_zero_or_more_times_", "B~;B_forever_", "B||C;B_parallel_C", "B.C;B_sequence_C", "(B|C);_open_group_B_or_C_close_group_",
-			"|B~|3;_or_B_forever__or_3", "B+~;B_one_or_more_times__forever_",
+			"|B~|3 . C;_or_B_forever__or_3_sequence_C", "B+~;B_one_or_more_times__forever_",
 			"|B~|2+;_or_B_forever__or_2_one_or_more_times_", "[B]+~;_open_option_B_close_option__one_or_more_times__forever_",
 			"(B.C)+~;_open_group_B_sequence_C_close_group__one_or_more_times__forever_" })
 	void stateNameOfEveryOperator(String expression, String stateName) {
@@ -423,6 +423,32 @@ class LivenessGrammarTest {
 	void emptyGroupOrOptionIsAnError(String text, int column) {
 		FormulaLoader.Result result = load(text);
 		assertOnlyError(result.issues(), LivenessValidator.EMPTY_GROUP, 1, column);
+	}
+
+	// ---------------------------------------------------------------- a root that is only |x~|n
+
+	@ParameterizedTest
+	@CsvSource(delimiter = ';', value = { "team = |Player~|3;1;8", "team = (|Player~|3);1;9", "// copies\\nteam = ((|Player~|3));2;10",
+			"team = X\\nteam = |Player~|3;2;8" })
+	void aRootThatIsOnlyReplicationIsWarnedAboutAtTheReplication(String text, int line, int column) {
+		FormulaLoader.Result result = load(text.replace("\\n", "\n"));
+		Issue issue = assertIssue(result.issues(), Severity.WARNING, LivenessValidator.AND_ROOT, line, column);
+		assertTrue(issue.getMessage().contains("AND state") && issue.getMessage().contains("'team = teamCopies'")
+				&& issue.getMessage().contains("'teamCopies = |Player~|3'"), issue.getMessage());
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+	}
+
+	@ParameterizedTest
+	@ValueSource(strings = { "team = teamCopies\\nteamCopies = |Player~|3", "team = |Player~|3 . Rest", "team = |Player~|3+",
+			"team = (|Player~|3)~" })
+	void aRootThatIsMoreThanReplicationIsNotWarnedAbout(String text) {
+		loadClean(text.replace("\\n", "\n"));
+	}
+
+	@Test
+	void aReplacedRootDefinitionIsNotWarnedAbout() {
+		FormulaLoader.Result result = load("team = |Player~|3\nteam = Rest");
+		assertTrue(result.issues().stream().noneMatch(issue -> LivenessValidator.AND_ROOT.equals(issue.getCode())), () -> describe(result.issues()));
 	}
 
 	@Test

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Set;
 
 import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -19,10 +20,12 @@ import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.transform.FormulaTransformation;
 import org.kse.validation.ModelValidation;
+import org.kse.validation.StatechartValidator;
 
 /**
- * Formulas the original tool turned into a model although the first rebuild refused them:
- * chained suffixes, a name defined twice. What a user checks: the model passes the
+ * Formulas the original tool turned into a model although the first rebuild refused or
+ * changed them: chained suffixes, a root that is only |x~|n, a name defined twice. What a
+ * user checks: the model passes (or, for the AND root, fails exactly as warned) the
  * statechart validation of kse validate, and kse label leaves the labels as they were.
  */
 class FormulaCornerCasesTest {
@@ -51,6 +54,50 @@ class FormulaCornerCasesTest {
 		// forever has no END; one-or-more has one
 		assertEquals(List.of("START", "OR"), forever.getChildren().stream().map(Node::getType).toList());
 		assertEquals(List.of("START", "BASIC", "END"), oneOrMore.getChildren().stream().map(Node::getType).toList());
+	}
+
+	/**
+	 * The original made the root of a lone |x~|n its AND state; so do we, warned at the formula.
+	 * Our statechart rules want an OR root, so validation then reports exactly that, and
+	 * nothing else.
+	 */
+	@Test
+	void aRootThatIsOnlyReplicationIsTheAndStateAsInTheOriginal() {
+		FormulaTransformation.Outcome outcome = Statecharts.run("team = |Player~|3");
+		Issue warning = outcome.issues().stream().filter(issue -> LivenessValidator.AND_ROOT.equals(issue.getCode())).findFirst()
+				.orElseThrow(() -> new AssertionError("no warning about the AND root: " + outcome.issues()));
+		assertEquals(Severity.WARNING, warning.getSeverity());
+		assertEquals("1:8", warning.getLineNumber() + ":" + warning.getColumn());
+		Model model = outcome.model();
+		assertNotNull(model, "a warning does not stop the transformation");
+
+		Node root = model.getNodes().get(0);
+		assertEquals("0 AND team", root.getLabel() + " " + root.getType() + " " + root.getName());
+		assertEquals(List.of("0.1", "0.2", "0.3"), root.getChildren().stream().map(Node::getLabel).toList());
+		for (Node region : root.getChildren()) {
+			assertEquals("OR", region.getType());
+			assertEquals(List.of("START", "BASIC Player", "END"),
+					region.getChildren().stream().map(n -> n.getType() + (n.getType().equals("BASIC") ? " " + n.getName() : "")).toList());
+		}
+		assertEquals(6, model.getTransitions().size());
+
+		List<Diagnostic> errors = errors(model);
+		assertEquals(1, errors.size(), () -> "only the root rule is broken: " + errors);
+		assertEquals(StatechartValidator.ROOT, errors.get(0).getCode());
+		assertTrue(errors.get(0).getMessage().contains("must be an OR state, not AND"), errors.get(0).getMessage());
+		assertLabelsStay("team = |Player~|3", model);
+	}
+
+	@Test
+	void theWarningsWayToAnOrRootGivesAValidModel() {
+		FormulaTransformation.Outcome outcome = Statecharts.run("team = teamCopies\nteamCopies = |Player~|3");
+		assertTrue(outcome.issues().isEmpty(), () -> outcome.issues().toString());
+		Model model = outcome.model();
+		assertEquals(List.of(), errors(model));
+		assertEquals("OR", model.getNodes().get(0).getType());
+		Node copies = node(model, "0.2");
+		assertEquals("AND teamCopies", copies.getType() + " " + copies.getName());
+		assertEquals(3, copies.getChildren().size());
 	}
 
 	@Test

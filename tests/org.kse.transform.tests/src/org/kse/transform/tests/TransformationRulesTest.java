@@ -129,21 +129,26 @@ class TransformationRulesTest {
 						0.3 BASIC C
 						0.4 END
 						=> 0.1->0.2 0.2->0.3 0.3->0.4"""),
-				// a plain |x~|n keeps the root an OR state (the original made it AND)
+				// a lone |x~|n makes the root itself its AND state, as the original did
 				Arguments.of("a = |B~|2", """
-						0 OR a
-						0.1 START
-						0.2 AND _or_B_forever__or_2
-						0.2.1 OR
-						0.2.1.1 START
-						0.2.1.2 BASIC B
-						0.2.1.3 END
-						0.2.2 OR
-						0.2.2.1 START
-						0.2.2.2 BASIC B
-						0.2.2.3 END
-						0.3 END
-						=> 0.1->0.2 0.2->0.3 0.2.1.1->0.2.1.2 0.2.1.2->0.2.1.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3"""),
+						0 AND a
+						0.1 OR
+						0.1.1 START
+						0.1.2 BASIC B
+						0.1.3 END
+						0.2 OR
+						0.2.1 START
+						0.2.2 BASIC B
+						0.2.3 END
+						=> 0.1.1->0.1.2 0.1.2->0.1.3 0.2.1->0.2.2 0.2.2->0.2.3"""),
+				// ... and so does a group holding only |x~|n, since a group without suffix is laid out in place
+				Arguments.of("a = (|B~|1)", """
+						0 AND a
+						0.1 OR
+						0.1.1 START
+						0.1.2 BASIC B
+						0.1.3 END
+						=> 0.1.1->0.1.2 0.1.2->0.1.3"""),
 				// suffixes chain: each applies to the term built by the one before
 				Arguments.of("a = B+~", """
 						0 OR a
