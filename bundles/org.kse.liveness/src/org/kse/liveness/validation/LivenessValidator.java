@@ -50,7 +50,8 @@ public class LivenessValidator extends AbstractLivenessValidator {
 
 	@Check
 	public void checkHasFormula(FormulaFile file) {
-		if (file.getFormulas().isEmpty()) {
+		// a line the parser could not read is no formula, but its syntax error says more
+		if (file.getFormulas().isEmpty() && (file.eResource() == null || file.eResource().getErrors().isEmpty())) {
 			if (file.getTitle() != null) {
 				error("'" + file.getTitle() + "' names a model but no formula follows", Literals.FORMULA_FILE__TITLE, NO_FORMULA);
 			} else {
@@ -61,28 +62,30 @@ public class LivenessValidator extends AbstractLivenessValidator {
 
 	@Check
 	public void checkEmptyFormula(Formula formula) {
-		if (formula.getExpression() == null) {
+		if (formula.getExpression() == null && !hasSyntaxErrorOnItsLine(formula)) {
 			error("'" + formula.getName() + "' has an empty right side", Literals.FORMULA__NAME, EMPTY_FORMULA);
 		}
 	}
 
 	@Check
 	public void checkEmptyGroup(Group group) {
-		if (group.getExpression() == null) {
+		if (group.getExpression() == null && !hasSyntaxErrorOnItsLine(group)) {
 			error("empty group '()'", null, EMPTY_GROUP);
 		}
 	}
 
 	@Check
 	public void checkEmptyOption(Option option) {
-		if (option.getExpression() == null) {
+		if (option.getExpression() == null && !hasSyntaxErrorOnItsLine(option)) {
 			error("empty option '[]'", null, EMPTY_GROUP);
 		}
 	}
 
 	@Check
 	public void checkReplicationCount(Replication replication) {
-		if (replication.getCount() < 1) {
+		List<INode> count = NodeModelUtils.findNodesForFeature(replication, Literals.REPLICATION__COUNT);
+		boolean written = !count.isEmpty() && count.get(0).getSyntaxErrorMessage() == null;
+		if (written && replication.getCount() < 1) {
 			error("|x~|n needs n of at least 1", Literals.REPLICATION__COUNT, BAD_COUNT);
 		}
 	}
@@ -116,6 +119,10 @@ public class LivenessValidator extends AbstractLivenessValidator {
 
 	@Check
 	public void checkMixedOperators(Expression expression) {
+		if (hasSyntaxErrorOnItsLine(expression)) {
+			// the parser's recovery may have read an operator the writer did not mean
+			return;
+		}
 		List<Operator> operators = expression.getOperators();
 		for (int i = 1; i < operators.size(); i++) {
 			if (operators.get(i) != operators.get(0)) {
@@ -270,5 +277,11 @@ public class LivenessValidator extends AbstractLivenessValidator {
 	private static int line(EObject element) {
 		INode node = NodeModelUtils.findActualNodeFor(element);
 		return node == null ? 0 : node.getStartLine();
+	}
+
+	/** Whether the parser stumbled on the element's line, so that what the element lacks is already explained. */
+	private static boolean hasSyntaxErrorOnItsLine(EObject element) {
+		int line = line(element);
+		return element.eResource() != null && element.eResource().getErrors().stream().anyMatch(error -> error.getLine() == line);
 	}
 }

@@ -135,6 +135,14 @@ class LivenessGrammarTest {
 	}
 
 	@Test
+	void aSuffixInsideReplicationNeedsBrackets() {
+		FormulaLoader.Result result = load("a = |B+~|2");
+		Issue error = assertOnlyError(result.issues(), Issues.SYNTAX, 1, 7);
+		assertTrue(error.getMessage().contains("|(B+)~|3"), error.getMessage());
+		loadClean("a = |(B+)~|2 . C");
+	}
+
+	@Test
 	void capabilitiesExpandAcrossLines() {
 		FormulaFile file = loadClean("a = b . c\nb = X | Y\nc = (Z)+\n").file();
 		assertEquals(List.of("a", "b", "c"), file.getFormulas().stream().map(Formula::getName).toList());
