@@ -27,20 +27,48 @@ public final class Formulas {
 	private Formulas() {
 	}
 
-	/** Capability definitions by name; the first definition of a name wins. */
+	/**
+	 * The definition in force for each name, in the order the names first appear: a name
+	 * defined again is replaced by its last definition, as in the original tool.
+	 */
 	public static Map<String, Formula> capabilities(FormulaFile file) {
 		Map<String, Formula> result = new LinkedHashMap<>();
 		for (Formula formula : file.getFormulas()) {
 			if (formula.getName() != null) {
-				result.putIfAbsent(formula.getName(), formula);
+				result.put(formula.getName(), formula);
 			}
 		}
 		return result;
 	}
 
-	/** The root formula: the first one in the file, or null for a file without formulas. */
+	/** The root formula: the first one in the file, which names the root; null for a file without formulas. */
 	public static Formula root(FormulaFile file) {
 		return file.getFormulas().isEmpty() ? null : file.getFormulas().get(0);
+	}
+
+	/** What the root stands for: the last definition of the root's name; null for a file without formulas. */
+	public static Formula rootDefinition(FormulaFile file) {
+		Formula root = root(file);
+		if (root == null || root.getName() == null) {
+			return root;
+		}
+		return capabilities(file).get(root.getName());
+	}
+
+	/**
+	 * The |x~|n that an expression consists of, looking through groups without a suffix
+	 * (they are laid out in place), or null when the expression is anything else.
+	 */
+	public static Replication loneReplication(Expression expression) {
+		Expression level = expression;
+		while (level != null && level.getTerms().size() == 1) {
+			Term term = level.getTerms().get(0);
+			if (term instanceof Replication replication) {
+				return replication;
+			}
+			level = term instanceof Group group ? group.getExpression() : null;
+		}
+		return null;
 	}
 
 	/** Every name referenced anywhere inside the given element, in document order. */

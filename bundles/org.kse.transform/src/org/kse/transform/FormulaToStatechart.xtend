@@ -20,8 +20,10 @@ import org.kse.model.statechart.StatechartFactory
 /**
  * Liveness formulas to statechart, by the rules of the original KSE (reference §3):
  * the same labels, node kinds, names, transitions and even the same order of
- * elements in the saved file. Where the original crashed (a lone name or a lone
- * |x~|n on the right side), the expression becomes a sequence of one term.
+ * elements in the saved file. Where the original crashed (a lone name on the right
+ * side), the expression becomes a sequence of one term. A name defined twice means its
+ * last definition. A root that is a lone |x~|n becomes that AND state itself, as in the
+ * original, although the statechart rules want an OR root (the formula validator warns).
  *
  * Expects a formula file without validation errors (no recursion, no mixed operators).
  */
@@ -34,7 +36,7 @@ class FormulaToStatechart {
 
 	def Model transform(FormulaFile file, String modelName) {
 		capabilities = Formulas.capabilities(file)
-		val rootFormula = Formulas.root(file)
+		val rootFormula = Formulas.rootDefinition(file)
 		model = createModel => [name = modelName ?: file.title ?: rootFormula.name]
 		val root = createNode => [
 			label = "0"
@@ -42,17 +44,8 @@ class FormulaToStatechart {
 			type = NodeKind.OR.name
 		]
 		model.nodes += root
-		expandRoot(rootFormula.expression, root)
+		expand(rootFormula.expression, root)
 		return model
-	}
-
-	def private expandRoot(Expression expression, Node root) {
-		if (expression.terms.size == 1 && expression.terms.head instanceof Replication) {
-			// the root must stay an OR state
-			sequence(expression, root)
-		} else {
-			expand(expression, root)
-		}
 	}
 
 	/** An expression placed into a composite state: its layout, then each term's content. */

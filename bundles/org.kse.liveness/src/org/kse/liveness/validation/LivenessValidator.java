@@ -11,6 +11,9 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.nodemodel.INode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.CheckType;
 import org.kse.liveness.Formulas;
@@ -36,16 +39,19 @@ public class LivenessValidator extends AbstractLivenessValidator {
 	public static final String EMPTY_GROUP = "kse.liveness.emptyGroup";
 	public static final String NO_FORMULA = "kse.liveness.noFormula";
 	public static final String DUPLICATE_DEFINITION = "kse.liveness.duplicateDefinition";
+	public static final String REPLACED_DEFINITION = "kse.liveness.replacedDefinition";
 	public static final String MIXED_OPERATORS = "kse.liveness.mixedOperators";
 	public static final String RECURSIVE_DEFINITION = "kse.liveness.recursiveDefinition";
 	public static final String UNDEFINED_CAPABILITY = "kse.liveness.undefinedCapability";
 	public static final String UNUSED_CAPABILITY = "kse.liveness.unusedCapability";
 	public static final String DUPLICATE_CHOICE = "kse.liveness.duplicateChoice";
 	public static final String BAD_COUNT = "kse.liveness.badCount";
+	public static final String AND_ROOT = "kse.liveness.andRoot";
 
 	@Check
 	public void checkHasFormula(FormulaFile file) {
-		if (file.getFormulas().isEmpty()) {
+		// a line the parser could not read is no formula, but its syntax error says more
+		if (file.getFormulas().isEmpty() && (file.eResource() == null || file.eResource().getErrors().isEmpty())) {
 			if (file.getTitle() != null) {
 				error("'" + file.getTitle() + "' names a model but no formula follows", Literals.FORMULA_FILE__TITLE, NO_FORMULA);
 			} else {
@@ -56,44 +62,51 @@ public class LivenessValidator extends AbstractLivenessValidator {
 
 	@Check
 	public void checkEmptyFormula(Formula formula) {
-		if (formula.getExpression() == null) {
+		if (formula.getExpression() == null && !hasSyntaxErrorOnItsLine(formula)) {
 			error("'" + formula.getName() + "' has an empty right side", Literals.FORMULA__NAME, EMPTY_FORMULA);
 		}
 	}
 
 	@Check
 	public void checkEmptyGroup(Group group) {
-		if (group.getExpression() == null) {
+		if (group.getExpression() == null && !hasSyntaxErrorOnItsLine(group)) {
 			error("empty group '()'", null, EMPTY_GROUP);
 		}
 	}
 
 	@Check
 	public void checkEmptyOption(Option option) {
-		if (option.getExpression() == null) {
+		if (option.getExpression() == null && !hasSyntaxErrorOnItsLine(option)) {
 			error("empty option '[]'", null, EMPTY_GROUP);
 		}
 	}
 
 	@Check
 	public void checkReplicationCount(Replication replication) {
-		if (replication.getCount() < 1) {
+		List<INode> count = NodeModelUtils.findNodesForFeature(replication, Literals.REPLICATION__COUNT);
+		boolean written = !count.isEmpty() && count.get(0).getSyntaxErrorMessage() == null;
+		if (written && replication.getCount() < 1) {
 			error("|x~|n needs n of at least 1", Literals.REPLICATION__COUNT, BAD_COUNT);
 		}
 	}
 
+	/**
+	 * A name defined again replaces its earlier definitions, as in the original tool; each
+	 * replaced one is marked, since the writer may have meant a new name.
+	 */
 	@Check
 	public void checkDuplicateDefinitions(FormulaFile file) {
-		Map<String, Formula> exact = new HashMap<>();
+		Map<String, Formula> inForce = Formulas.capabilities(file);
 		Map<String, Formula> folded = new HashMap<>();
 		for (Formula formula : file.getFormulas()) {
 			String name = formula.getName();
 			if (name == null) {
 				continue;
 			}
-			Formula earlier = exact.putIfAbsent(name, formula);
-			if (earlier != null) {
-				error("'" + name + "' is already defined on line " + line(earlier), formula, Literals.FORMULA__NAME, DUPLICATE_DEFINITION);
+			Formula last = inForce.get(name);
+			if (last != formula) {
+				warning("this definition of '" + name + "' is replaced by the one on line " + line(last), formula, Literals.FORMULA__NAME,
+						REPLACED_DEFINITION);
 				continue;
 			}
 			Formula similar = folded.putIfAbsent(name.toLowerCase(Locale.ROOT), formula);
@@ -106,6 +119,10 @@ public class LivenessValidator extends AbstractLivenessValidator {
 
 	@Check
 	public void checkMixedOperators(Expression expression) {
+		if (hasSyntaxErrorOnItsLine(expression)) {
+			// the parser's recovery may have read an operator the writer did not mean
+			return;
+		}
 		List<Operator> operators = expression.getOperators();
 		for (int i = 1; i < operators.size(); i++) {
 			if (operators.get(i) != operators.get(0)) {
@@ -152,10 +169,27 @@ public class LivenessValidator extends AbstractLivenessValidator {
 		}
 	}
 
+	/**
+	 * The original made the root of a lone |x~|n the AND state itself, and so do we; but the
+	 * statechart rules want an OR root, so say so while the formula can still be changed.
+	 */
+	@Check
+	public void checkAndRoot(FormulaFile file) {
+		Formula root = Formulas.rootDefinition(file);
+		Replication replication = root == null || root.getName() == null ? null : Formulas.loneReplication(root.getExpression());
+		if (replication != null) {
+			String name = root.getName();
+			String copies = name + "Copies";
+			warning("'" + name + "' is only " + Formulas.text(replication) + ", so the root becomes its AND state, as in the original tool, "
+					+ "and statechart validation will refuse it (the root must be an OR state); to keep an OR root, write '" + name + " = "
+					+ copies + "' and '" + copies + " = " + Formulas.text(replication) + "'", replication, null, AND_ROOT);
+		}
+	}
+
 	@Check(CheckType.NORMAL)
 	public void checkUnusedCapabilities(FormulaFile file) {
-		Formula root = Formulas.root(file);
-		if (root == null) {
+		Formula root = Formulas.rootDefinition(file);
+		if (root == null || root.getName() == null) {
 			return;
 		}
 		Map<String, Formula> capabilities = Formulas.capabilities(file);
@@ -240,8 +274,14 @@ public class LivenessValidator extends AbstractLivenessValidator {
 		return String.join(" \u2192 ", loop) + " \u2192 " + target;
 	}
 
-	private static int line(Formula formula) {
-		var node = org.eclipse.xtext.nodemodel.util.NodeModelUtils.findActualNodeFor(formula);
+	private static int line(EObject element) {
+		INode node = NodeModelUtils.findActualNodeFor(element);
 		return node == null ? 0 : node.getStartLine();
+	}
+
+	/** Whether the parser stumbled on the element's line, so that what the element lacks is already explained. */
+	private static boolean hasSyntaxErrorOnItsLine(EObject element) {
+		int line = line(element);
+		return element.eResource() != null && element.eResource().getErrors().stream().anyMatch(error -> error.getLine() == line);
 	}
 }

@@ -18,7 +18,8 @@ import org.kse.liveness.FormulaLoader;
 /**
  * Whatever a user types, parsing never throws and every error points into the text: line and
  * column at least 1, offset and length inside the text, and line:column the place the offset
- * names. Inputs are random (fixed seeds, so a failure repeats) or truncations of real text.
+ * names; formula messages never use the parser's words. Inputs are random (fixed seeds, so a
+ * failure repeats) or truncations of real text.
  */
 class FuzzTest {
 
@@ -148,17 +149,18 @@ class FuzzTest {
 
 	// ---------------------------------------------------------------- machinery
 
-	private record Outcome(boolean hasErrors, boolean hasModel, List<Issue> issues) {
+	/** {@code inFormulaWords}: the messages must speak of formulas, not of the parser. */
+	private record Outcome(boolean hasErrors, boolean hasModel, List<Issue> issues, boolean inFormulaWords) {
 	}
 
 	private static Outcome load(String text) {
 		FormulaLoader.Result result = FormulaLoader.load(text, URI.createURI("fuzz.liveness"));
-		return new Outcome(result.hasErrors(), result.file() != null, result.issues());
+		return new Outcome(result.hasErrors(), result.file() != null, result.issues(), true);
 	}
 
 	private static Outcome parse(String text) {
 		ExpressionParser.Result result = ExpressionParser.parse(text);
-		return new Outcome(result.hasErrors(), result.expression() != null || text.isBlank(), result.issues());
+		return new Outcome(result.hasErrors(), result.expression() != null || text.isBlank(), result.issues(), false);
 	}
 
 	private static void fuzz(String name, Function<String, Outcome> parser, Random random, Function<Random, String> generator) {
@@ -200,6 +202,10 @@ class FuzzTest {
 			return "no error, yet no model";
 		}
 		for (Issue issue : outcome.issues()) {
+			String jargon = outcome.inFormulaWords() ? Issues.jargonIn(issue.getMessage()) : null;
+			if (jargon != null) {
+				return "parser jargon '" + jargon + "' in: " + issue.getMessage();
+			}
 			if (issue.getSeverity() != Severity.ERROR) {
 				continue;
 			}
@@ -227,7 +233,7 @@ class FuzzTest {
 	}
 
 	/** 1-based line and column of an offset; "\r\n", "\n" and a lone "\r" each end a line. */
-	private static int[] lineAndColumn(String text, int offset) {
+	static int[] lineAndColumn(String text, int offset) {
 		int line = 1;
 		int lineStart = 0;
 		for (int i = 0; i < offset; i++) {

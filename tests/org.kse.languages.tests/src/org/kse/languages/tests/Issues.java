@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import org.eclipse.xtext.diagnostics.Severity;
@@ -15,7 +17,18 @@ final class Issues {
 	/** The code Xtext gives to every syntax error. */
 	static final String SYNTAX = "org.eclipse.xtext.diagnostics.Diagnostic.Syntax";
 
+	/** Words of the parser generator that mean nothing to someone writing formulas. */
+	private static final Pattern PARSER_JARGON = Pattern.compile(
+			"missing EOF|extraneous input|mismatched (input|character)|no viable alternative|expecting|RULE_|EOF|token|required \\(\\.\\.\\.\\)\\+ loop",
+			Pattern.CASE_INSENSITIVE);
+
 	private Issues() {
+	}
+
+	/** The first piece of parser jargon in a message, or null when it has none. */
+	static String jargonIn(String message) {
+		Matcher matcher = PARSER_JARGON.matcher(message == null ? "" : message);
+		return matcher.find() ? matcher.group() : null;
 	}
 
 	/** One line per issue: "ERROR 2:7 code message". */

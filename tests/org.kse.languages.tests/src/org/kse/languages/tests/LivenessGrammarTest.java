@@ -75,9 +75,10 @@ class LivenessGrammarTest {
 	@ParameterizedTest
 	@ValueSource(strings = { //
 			"a = B.C", "a = B . C . D", "a = B|C", "a = B | C | D", "a = B||C", "a = B || C || D", //
-			"a = B*", "a = B+", "a = B~", "a = [B]", "a = (B)", "a = |B~|3", "a = |(B.C)~|12", //
+			"a = B*", "a = B+", "a = B~", "a = [B]", "a = (B)", "a = |B~|3 . C", "a = D || |(B.C)~|12", //
 			"a = (B.[C|D]*)||(E+ . |F~|2)", "a = ((((B))))", "a = [[B]]", "a = (B|C)+ . [D*] . E~", //
-			"a = Xyz_1.Abc_2", "a = B . (C | D) . (E || F)" })
+			"a = Xyz_1.Abc_2", "a = B . (C | D) . (E || F)", //
+			"a = B+~", "a = |B~|2+", "a = [B]+~", "a = B*+", "a = (B.C)+~", "a = B~~", "a = |(B|C)~|2*", "a = |[B]~|2 . C+*~" })
 	void everyOperatorParsesWithoutIssues(String text) {
 		FormulaLoader.Result result = loadClean(text);
 		assertEquals(1, result.file().getFormulas().size());
@@ -110,6 +111,35 @@ class LivenessGrammarTest {
 		Replication replication = assertInstanceOf(Replication.class, expression.getTerms().get(5));
 		assertEquals(4, replication.getCount());
 		assertEquals("G", assertInstanceOf(Reference.class, replication.getOperand()).getName());
+	}
+
+	@Test
+	void eachSuffixAppliesToTheTermBuiltBeforeIt() {
+		Expression expression = loadClean("a = B+~ . |C~|2+ . [D]*+~").file().getFormulas().get(0).getExpression();
+		Repetition forever = assertInstanceOf(Repetition.class, expression.getTerms().get(0));
+		assertEquals(RepetitionKind.FOREVER, forever.getKind());
+		Repetition oneOrMore = assertInstanceOf(Repetition.class, forever.getOperand());
+		assertEquals(RepetitionKind.ONE_OR_MORE, oneOrMore.getKind());
+		assertEquals("B", assertInstanceOf(Reference.class, oneOrMore.getOperand()).getName());
+
+		Repetition repeatedCopies = assertInstanceOf(Repetition.class, expression.getTerms().get(1));
+		assertEquals(RepetitionKind.ONE_OR_MORE, repeatedCopies.getKind());
+		assertEquals(2, assertInstanceOf(Replication.class, repeatedCopies.getOperand()).getCount());
+
+		Repetition outer = assertInstanceOf(Repetition.class, expression.getTerms().get(2));
+		Repetition middle = assertInstanceOf(Repetition.class, outer.getOperand());
+		Repetition inner = assertInstanceOf(Repetition.class, middle.getOperand());
+		assertEquals(List.of(RepetitionKind.FOREVER, RepetitionKind.ONE_OR_MORE, RepetitionKind.ZERO_OR_MORE),
+				List.of(outer.getKind(), middle.getKind(), inner.getKind()));
+		assertInstanceOf(Option.class, inner.getOperand());
+	}
+
+	@Test
+	void aSuffixInsideReplicationNeedsBrackets() {
+		FormulaLoader.Result result = load("a = |B+~|2");
+		Issue error = assertOnlyError(result.issues(), Issues.SYNTAX, 1, 7);
+		assertTrue(error.getMessage().contains("|(B+)~|3"), error.getMessage());
+		loadClean("a = |(B+)~|2 . C");
 	}
 
 	@Test
@@ -199,7 +229,9 @@ class LivenessGrammarTest {
 	@ParameterizedTest
 	@CsvSource(delimiter = ';', value = { //
 			"B*;B_zero_or_more_times_", "B~;B_forever_", "B||C;B_parallel_C", "B.C;B_sequence_C", "(B|C);_open_group_B_or_C_close_group_",
-			"|B~|3;_or_B_forever__or_3" })
+			"|B~|3 . C;_or_B_forever__or_3_sequence_C", "B+~;B_one_or_more_times__forever_",
+			"|B~|2+;_or_B_forever__or_2_one_or_more_times_", "[B]+~;_open_option_B_close_option__one_or_more_times__forever_",
+			"(B.C)+~;_open_group_B_sequence_C_close_group__one_or_more_times__forever_" })
 	void stateNameOfEveryOperator(String expression, String stateName) {
 		FormulaFile file = loadClean("a = " + expression).file();
 		assertEquals(stateName, Formulas.stateName(file.getFormulas().get(0).getExpression()));
@@ -244,19 +276,53 @@ class LivenessGrammarTest {
 		assertFalse(result.hasErrors(), () -> describe(result.issues()));
 	}
 
-	// ---------------------------------------------------------------- duplicates
+	// ---------------------------------------------------------------- definitions given twice
 
 	@Test
-	void duplicateLeftSideIsAnErrorAtTheSecondDefinition() {
+	void aNameDefinedAgainIsReplacedWithAWarningAtTheReplacedDefinition() {
 		FormulaLoader.Result result = load("a = b\nb = C\nb = D");
-		Issue issue = assertOnlyError(result.issues(), LivenessValidator.DUPLICATE_DEFINITION, 3, 1);
-		assertTrue(issue.getMessage().contains("line 2"), issue.getMessage());
+		Issue issue = assertIssue(result.issues(), Severity.WARNING, LivenessValidator.REPLACED_DEFINITION, 2, 1);
+		assertEquals("this definition of 'b' is replaced by the one on line 3", issue.getMessage());
+		assertEquals(1, result.issues().size(), () -> describe(result.issues()));
+		assertEquals("D", Formulas.text(formula(result.file(), "b").getExpression()));
 	}
 
 	@Test
-	void duplicateRootIsAnErrorAtTheSecondDefinition() {
+	void everyReplacedDefinitionNamesTheLastOne() {
+		FormulaLoader.Result result = load("a = b\nb = C\n\nb = D\nb = E");
+		List<Issue> replaced = result.issues().stream().filter(issue -> LivenessValidator.REPLACED_DEFINITION.equals(issue.getCode())).toList();
+		assertEquals(List.of("2:1 line 5", "4:1 line 5"),
+				replaced.stream().map(issue -> issue.getLineNumber() + ":" + issue.getColumn() + " line "
+						+ issue.getMessage().replaceAll(".*line ", "")).toList(),
+				() -> describe(result.issues()));
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+		assertEquals("E", Formulas.text(formula(result.file(), "b").getExpression()));
+	}
+
+	@Test
+	void theRootDefinedAgainKeepsItsNameAndTakesTheLastExpression() {
 		FormulaLoader.Result result = load("// root\na = B\n\na = C");
-		assertOnlyError(result.issues(), LivenessValidator.DUPLICATE_DEFINITION, 4, 1);
+		Issue issue = assertIssue(result.issues(), Severity.WARNING, LivenessValidator.REPLACED_DEFINITION, 2, 1);
+		assertTrue(issue.getMessage().endsWith("line 4"), issue.getMessage());
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+		assertEquals("a", Formulas.root(result.file()).getName());
+		assertEquals("C", Formulas.text(Formulas.rootDefinition(result.file()).getExpression()));
+	}
+
+	@Test
+	void onlyTheDefinitionInForceCountsForRecursionAndUse() {
+		// the replaced 'b' used itself and 'c'; the one in force uses neither
+		FormulaLoader.Result result = load("a = b\nb = b.c\nb = D\nc = E");
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+		assertIssue(result.issues(), Severity.WARNING, LivenessValidator.REPLACED_DEFINITION, 2, 1);
+		assertIssue(result.issues(), Severity.WARNING, LivenessValidator.UNUSED_CAPABILITY, 4, 1);
+	}
+
+	@Test
+	void aCapabilityUsedOnlyByAReplacedRootIsUnused() {
+		FormulaLoader.Result result = load("a = b\nb = C\na = D");
+		assertIssue(result.issues(), Severity.WARNING, LivenessValidator.UNUSED_CAPABILITY, 2, 1);
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
 	}
 
 	@Test
@@ -365,6 +431,32 @@ class LivenessGrammarTest {
 	void emptyGroupOrOptionIsAnError(String text, int column) {
 		FormulaLoader.Result result = load(text);
 		assertOnlyError(result.issues(), LivenessValidator.EMPTY_GROUP, 1, column);
+	}
+
+	// ---------------------------------------------------------------- a root that is only |x~|n
+
+	@ParameterizedTest
+	@CsvSource(delimiter = ';', value = { "team = |Player~|3;1;8", "team = (|Player~|3);1;9", "// copies\\nteam = ((|Player~|3));2;10",
+			"team = X\\nteam = |Player~|3;2;8" })
+	void aRootThatIsOnlyReplicationIsWarnedAboutAtTheReplication(String text, int line, int column) {
+		FormulaLoader.Result result = load(text.replace("\\n", "\n"));
+		Issue issue = assertIssue(result.issues(), Severity.WARNING, LivenessValidator.AND_ROOT, line, column);
+		assertTrue(issue.getMessage().contains("AND state") && issue.getMessage().contains("'team = teamCopies'")
+				&& issue.getMessage().contains("'teamCopies = |Player~|3'"), issue.getMessage());
+		assertFalse(result.hasErrors(), () -> describe(result.issues()));
+	}
+
+	@ParameterizedTest
+	@ValueSource(strings = { "team = teamCopies\\nteamCopies = |Player~|3", "team = |Player~|3 . Rest", "team = |Player~|3+",
+			"team = (|Player~|3)~" })
+	void aRootThatIsMoreThanReplicationIsNotWarnedAbout(String text) {
+		loadClean(text.replace("\\n", "\n"));
+	}
+
+	@Test
+	void aReplacedRootDefinitionIsNotWarnedAbout() {
+		FormulaLoader.Result result = load("team = |Player~|3\nteam = Rest");
+		assertTrue(result.issues().stream().noneMatch(issue -> LivenessValidator.AND_ROOT.equals(issue.getCode())), () -> describe(result.issues()));
 	}
 
 	@Test

@@ -129,8 +129,36 @@ class TransformationRulesTest {
 						0.3 BASIC C
 						0.4 END
 						=> 0.1->0.2 0.2->0.3 0.3->0.4"""),
-				// a plain |x~|n keeps the root an OR state (the original made it AND)
+				// a lone |x~|n makes the root itself its AND state, as the original did
 				Arguments.of("a = |B~|2", """
+						0 AND a
+						0.1 OR
+						0.1.1 START
+						0.1.2 BASIC B
+						0.1.3 END
+						0.2 OR
+						0.2.1 START
+						0.2.2 BASIC B
+						0.2.3 END
+						=> 0.1.1->0.1.2 0.1.2->0.1.3 0.2.1->0.2.2 0.2.2->0.2.3"""),
+				// ... and so does a group holding only |x~|n, since a group without suffix is laid out in place
+				Arguments.of("a = (|B~|1)", """
+						0 AND a
+						0.1 OR
+						0.1.1 START
+						0.1.2 BASIC B
+						0.1.3 END
+						=> 0.1.1->0.1.2 0.1.2->0.1.3"""),
+				// suffixes chain: each applies to the term built by the one before
+				Arguments.of("a = B+~", """
+						0 OR a
+						0.1 START
+						0.2 OR B_one_or_more_times_
+						0.2.1 START
+						0.2.2 BASIC B
+						0.2.3 END
+						=> 0.1->0.2 0.2->0.2 0.2.1->0.2.2 0.2.2->0.2.2 0.2.2->0.2.3"""),
+				Arguments.of("a = |B~|2+", """
 						0 OR a
 						0.1 START
 						0.2 AND _or_B_forever__or_2
@@ -143,7 +171,65 @@ class TransformationRulesTest {
 						0.2.2.2 BASIC B
 						0.2.2.3 END
 						0.3 END
-						=> 0.1->0.2 0.2->0.3 0.2.1.1->0.2.1.2 0.2.1.2->0.2.1.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3"""),
+						=> 0.1->0.2 0.2->0.2 0.2->0.3 0.2.1.1->0.2.1.2 0.2.1.2->0.2.1.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3"""),
+				Arguments.of("a = [B]+~", """
+						0 OR a
+						0.1 START
+						0.2 OR _open_option_B_close_option__one_or_more_times_
+						0.2.1 START
+						0.2.2 OR _open_option_B_close_option_
+						0.2.2.1 START
+						0.2.2.2 CONDITION
+						0.2.2.3 BASIC B
+						0.2.2.4 END
+						0.2.3 END
+						=> 0.1->0.2 0.2->0.2 0.2.1->0.2.2 0.2.2->0.2.2 0.2.2->0.2.3 0.2.2.1->0.2.2.2 0.2.2.2->0.2.2.3 0.2.2.2->0.2.2.4 0.2.2.3->0.2.2.4"""),
+				Arguments.of("a = B*+", """
+						0 OR a
+						0.1 START
+						0.2 OR B_zero_or_more_times_
+						0.2.1 START
+						0.2.2 CONDITION
+						0.2.3 BASIC B
+						0.2.4 END
+						0.3 END
+						=> 0.1->0.2 0.2->0.2 0.2->0.3 0.2.1->0.2.2 0.2.2->0.2.3 0.2.3->0.2.3 0.2.2->0.2.4 0.2.3->0.2.4"""),
+				Arguments.of("a = X.(B.C)+~", """
+						0 OR a
+						0.1 START
+						0.2 BASIC X
+						0.3 OR _open_group_B_sequence_C_close_group__one_or_more_times__forever_
+						0.3.1 START
+						0.3.2 OR _open_group_B_sequence_C_close_group__one_or_more_times_
+						0.3.2.1 START
+						0.3.2.2 OR _open_group_B_sequence_C_close_group_
+						0.3.2.2.1 START
+						0.3.2.2.2 BASIC B
+						0.3.2.2.3 BASIC C
+						0.3.2.2.4 END
+						0.3.2.3 END
+						0.4 END
+						=> 0.1->0.2 0.2->0.3 0.3->0.4 0.3.1->0.3.2 0.3.2->0.3.2 0.3.2.1->0.3.2.2 0.3.2.2->0.3.2.2 0.3.2.2->0.3.2.3 \
+						0.3.2.2.1->0.3.2.2.2 0.3.2.2.2->0.3.2.2.3 0.3.2.2.3->0.3.2.2.4"""),
+				// a name defined again means its last definition, the root's too
+				Arguments.of("a = b\nb = C\nb = D|E", """
+						0 OR a
+						0.1 START
+						0.2 OR b
+						0.2.1 START
+						0.2.2 CONDITION
+						0.2.3 BASIC D
+						0.2.4 BASIC E
+						0.2.5 END
+						0.3 END
+						=> 0.1->0.2 0.2->0.3 0.2.1->0.2.2 0.2.2->0.2.3 0.2.2->0.2.4 0.2.3->0.2.5 0.2.4->0.2.5"""),
+				Arguments.of("a = B\na = C.D", """
+						0 OR a
+						0.1 START
+						0.2 BASIC C
+						0.3 BASIC D
+						0.4 END
+						=> 0.1->0.2 0.2->0.3 0.3->0.4"""),
 				Arguments.of("a = B.C+", """
 						0 OR a
 						0.1 START
