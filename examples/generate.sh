@@ -3,6 +3,5 @@
 # Hand-written activities in src/activities/ are never touched.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-for model in Goalie Attacker Defender; do
-  "$here/../kse" generate --quiet "$here/$model/$model.stct" "$here/src"
-done
+"$here/../kse" generate --quiet "$here/Goalie/Goalie.stct" "$here/Attacker/Attacker.stct" \
+  "$here/Defender/Defender.stct" "$here/src"

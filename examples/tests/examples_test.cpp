@@ -72,18 +72,21 @@ public:
 	}
 
 	std::vector<std::string> Actions() {
+		motion_.ProcessMessages();
 		std::vector<std::string> commands;
 		while (auto action = motion_.ReadSignal<MotionActionMessage>("motion")) commands.push_back(action->command());
 		return commands;
 	}
 
 	std::shared_ptr<const MotionWalkMessage> LastWalk() {
+		motion_.ProcessMessages();
 		std::shared_ptr<const MotionWalkMessage> last;
 		while (auto walk = motion_.ReadSignal<MotionWalkMessage>("motion")) last = walk;
 		return last;
 	}
 
 	int HeadCommands() {
+		motion_.ProcessMessages();
 		int count = 0;
 		while (motion_.ReadSignal<MotionHeadMessage>("motion")) ++count;
 		return count;

@@ -36,6 +36,41 @@ void Blackboard::Deliver(const std::string& topic, Kind kind, const MessagePtr& 
                          TimePoint time) {
   std::string key = Key(topic, message->GetTypeName());
   std::lock_guard<std::mutex> lock(mutex_);
+  Queue(std::move(key), kind, message, time);
+}
+
+void Blackboard::Queue(std::string key, Kind kind, const MessagePtr& message, TimePoint time) {
+  switch (kind) {
+    case Kind::State: {
+      auto [it, added] = inbox_states_.insert_or_assign(std::move(key), Entry{message, time});
+      (void)it;
+      inbox_size_ += added ? 1 : 0;
+      break;
+    }
+    case Kind::Signal: {
+      auto& queue = inbox_signals_[std::move(key)];
+      if (queue.size() >= kSignalQueueLimit) {
+        queue.pop_front();
+        --inbox_size_;
+      }
+      queue.push_back(message);
+      ++inbox_size_;
+      break;
+    }
+    case Kind::Data: {
+      auto& history = inbox_data_[std::move(key)];
+      if (history.size() >= kDataHistoryLimit) {
+        history.pop_front();
+        --inbox_size_;
+      }
+      history.push_back(Entry{message, time});
+      ++inbox_size_;
+      break;
+    }
+  }
+}
+
+void Blackboard::Apply(std::string key, Kind kind, const MessagePtr& message, TimePoint time) {
   switch (kind) {
     case Kind::State:
       states_[std::move(key)] = Entry{message, time};
@@ -57,6 +92,35 @@ void Blackboard::Deliver(const std::string& topic, Kind kind, const MessagePtr& 
       break;
     }
   }
+}
+
+void Blackboard::ProcessMessages() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (inbox_size_ == 0) {
+    return;
+  }
+  for (auto& [key, entry] : inbox_states_) {
+    states_[key] = std::move(entry);
+  }
+  for (auto& [key, queue] : inbox_signals_) {
+    for (auto& message : queue) {
+      Apply(key, Kind::Signal, message, TimePoint());
+    }
+  }
+  for (auto& [key, history] : inbox_data_) {
+    for (auto& entry : history) {
+      Apply(key, Kind::Data, entry.message, entry.time);
+    }
+  }
+  inbox_states_.clear();
+  inbox_signals_.clear();
+  inbox_data_.clear();
+  inbox_size_ = 0;
+}
+
+std::size_t Blackboard::PendingMessages() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return inbox_size_;
 }
 
 Blackboard::MessagePtr Blackboard::ReadStateMessage(const std::string& topic,
@@ -117,39 +181,45 @@ std::size_t Blackboard::PendingSignals(const std::string& topic,
 }
 
 void Blackboard::PublishMessage(const std::string& topic, Kind kind, MessagePtr message) {
-  hub_.Publish(topic, kind, std::move(message));
+  if (!message) {
+    return;
+  }
+  {
+    std::string key = Key(topic, message->GetTypeName());
+    std::lock_guard<std::mutex> lock(mutex_);
+    Apply(std::move(key), kind, message, Now());
+  }
+  hub_.Publish(topic, kind, std::move(message), this);
 }
 
 void Blackboard::PublishCopy(const std::string& topic, Kind kind,
                              const google::protobuf::Message& message) {
   std::shared_ptr<google::protobuf::Message> copy(message.New());
   copy->CopyFrom(message);
-  hub_.Publish(topic, kind, std::move(copy));
+  PublishMessage(topic, kind, std::move(copy));
 }
 
-void Blackboard::SetTimeout(const std::string& topic, std::chrono::milliseconds after) {
-  const TimePoint deadline = Now() + after;
+void Blackboard::ScheduleWakeup(TimePoint time) {
   std::lock_guard<std::mutex> lock(mutex_);
-  timers_[topic] = deadline;
+  wakeups_.insert(time);
 }
 
-bool Blackboard::TimeoutExpired(const std::string& topic) const {
-  const TimePoint now = Now();
+std::optional<TimePoint> Blackboard::NextWakeup() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = timers_.find(topic);
-  return it == timers_.end() || now >= it->second;
-}
-
-std::optional<TimePoint> Blackboard::NextDeadline() const {
-  const TimePoint now = Now();
-  std::optional<TimePoint> next;
-  std::lock_guard<std::mutex> lock(mutex_);
-  for (const auto& timer : timers_) {
-    if (timer.second > now && (!next || timer.second < *next)) {
-      next = timer.second;
-    }
+  if (wakeups_.empty()) {
+    return std::nullopt;
   }
-  return next;
+  return *wakeups_.begin();
+}
+
+bool Blackboard::TakeDueWakeups(TimePoint now) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto end = wakeups_.upper_bound(now);
+  if (end == wakeups_.begin()) {
+    return false;
+  }
+  wakeups_.erase(wakeups_.begin(), end);
+  return true;
 }
 
 }  // namespace kse::messaging

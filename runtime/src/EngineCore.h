@@ -30,10 +30,11 @@ class EngineCore {
 
   void Activate();
   bool Step();
+  bool RunIfWoken();
   bool RunUntilStable(std::size_t max_transitions);
   void Start();
   void Stop();
-  /// Stop(), forget the hub listener, join the worker pool.
+  /// Stop(), join the worker pool.
   void Shutdown();
   void Wake();
 
@@ -53,6 +54,7 @@ class EngineCore {
   std::atomic<std::size_t> guard_failures_{0};
   std::atomic<std::size_t> action_failures_{0};
   std::atomic<std::size_t> transitions_taken_{0};
+  std::atomic<std::size_t> step_number_{0};
   std::atomic<std::size_t> running_activities_{0};
 
  private:
@@ -64,8 +66,8 @@ class EngineCore {
   void CallUserInits();
 
   // Stepping
+  bool StepRoot();
   bool StepState(State* state);
-  bool IsBusy(const State* state) const;
   bool TryTransitions(State* state);
   bool EvalGuard(TransitionSegmentBase* transition);
   bool FindChain(State* connector, std::size_t depth);
@@ -81,11 +83,17 @@ class EngineCore {
   // Activities
   void Launch(BasicState* state);
   void RunActivity(BasicState* state);
-  void FinishActivity(BasicState* state);
+  /// Called on a worker after the activity returned: true when it must run again (its state
+  /// was entered again while it ran).
+  bool FinishActivity(BasicState* state);
 
-  // Engine thread
+  // Waking
+  /// Consumes the reasons to re-evaluate: woken_ and the wake-up times due on the clock.
+  bool TakeWake();
+  /// Steps until nothing fires or the bound is reached (then false, with a warning).
+  bool StepUntilQuiet(std::size_t max_transitions, std::size_t first);
   void Loop();
-  std::optional<kse::messaging::TimePoint> NextDeadline() const;
+  std::optional<kse::messaging::TimePoint> NextWakeup() const;
   void WaitForActivities();
 
   void Report(const std::string& what) const;
@@ -95,6 +103,7 @@ class EngineCore {
   std::vector<std::unique_ptr<TransitionSegmentBase>> owned_transitions_;  // model order
 
   // Guards the configuration (active flags, active children), the observer and Activate.
+  // Workers never take it.
   mutable std::recursive_mutex engine_mutex_;
   std::vector<State*> states_;                              // document order, after Prepare
   std::vector<kse::messaging::Blackboard*> blackboards_;    // root + regions
@@ -103,12 +112,12 @@ class EngineCore {
   std::atomic<bool> activated_{false};
 
   std::unique_ptr<WorkerPool> pool_;
-  std::optional<kse::messaging::MessageHub::ListenerId> listener_;
 
-  // Wake-ups of the engine thread and of RunUntilStable.
+  // Waking the engine (thread or RunUntilStable) and the activity bookkeeping.
   std::mutex wake_mutex_;
   std::condition_variable wake_cv_;
-  std::uint64_t wake_generation_ = 0;
+  std::uint64_t wake_generation_ = 0;  // any change: a wake, an activity's end, Stop()
+  bool woken_ = false;                 // a reason to re-evaluate
   bool stop_requested_ = false;
 
   std::mutex control_mutex_;  // serialises Start/Stop/Shutdown

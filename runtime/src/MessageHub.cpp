@@ -14,7 +14,8 @@ MessageHub::MessageHub(const Clock& clock) : clock_(clock) {}
 MessageHub::~MessageHub() = default;
 
 void MessageHub::Publish(const std::string& topic, Kind kind,
-                         std::shared_ptr<const google::protobuf::Message> message) {
+                         std::shared_ptr<const google::protobuf::Message> message,
+                         const Blackboard* origin) {
   if (!message) {
     return;
   }
@@ -23,12 +24,14 @@ void MessageHub::Publish(const std::string& topic, Kind kind,
     const TimePoint now = clock_.Now();
     ++published_;
     if (kind == Kind::State) {
-      retained_[topic][message->GetTypeName()] = Retained{message, now};
+      retained_[topic][message->GetTypeName()] = Retained{message, now, origin};
     }
     auto it = subscribers_.find(topic);
     if (it != subscribers_.end()) {
       for (Blackboard* board : it->second) {
-        board->Deliver(topic, kind, message, now);
+        if (board != origin) {
+          board->Deliver(topic, kind, message, now);
+        }
       }
     }
   }
@@ -73,7 +76,9 @@ void MessageHub::Attach(Blackboard* board, const std::string& topic) {
   auto it = retained_.find(topic);
   if (it != retained_.end()) {
     for (const auto& entry : it->second) {
-      board->Deliver(topic, Kind::State, entry.second.message, entry.second.time);
+      if (entry.second.origin != board) {
+        board->Deliver(topic, Kind::State, entry.second.message, entry.second.time);
+      }
     }
   }
 }

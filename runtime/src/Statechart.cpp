@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -16,9 +17,25 @@ namespace {
 
 constexpr std::size_t kMaxConnectorChain = 64;
 constexpr std::size_t kStepsPerBatch = 1000;  // engine thread: check Stop() at least this often
-constexpr auto kIdleReevaluation = std::chrono::seconds(1);
+// How often the engine thread looks at its clock when no wake-up time is near (a ManualClock
+// moved by someone who did not call Wake()).
+constexpr auto kClockLook = std::chrono::seconds(1);
 
 OrState* AsOr(State* state) { return static_cast<OrState*>(state); }
+
+// The order in which Monas tried a state's transitions: each guarded one was inserted at the
+// front of the list as it was created, each unguarded one appended.
+void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
+  std::vector<TransitionSegmentBase*> ordered;
+  ordered.reserve(outgoing.size());
+  for (auto it = outgoing.rbegin(); it != outgoing.rend(); ++it) {
+    if ((*it)->IsGuarded()) ordered.push_back(*it);
+  }
+  for (TransitionSegmentBase* transition : outgoing) {
+    if (!transition->IsGuarded()) ordered.push_back(transition);
+  }
+  outgoing.swap(ordered);
+}
 const OrState* AsOr(const State* state) { return static_cast<const OrState*>(state); }
 
 std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
@@ -232,18 +249,20 @@ void EngineCore::Prepare() {
     }
     if (state->parent_ == nullptr) {
       state->scope_ = &root_blackboard_;
+      state->region_ = AsOr(state);
     } else if (state->kind_ == StateKind::Or && AsOr(state)->IsRegion()) {
       state->scope_ = AsOr(state)->region_blackboard_.get();
+      state->region_ = AsOr(state);
     } else {
       state->scope_ = state->parent_->scope_;
+      state->region_ = state->parent_->region_;
     }
     if (state->kind_ == StateKind::Basic) {
       if (IActivity* activity = static_cast<BasicState*>(state)->activity_.get()) {
         activity->SetBlackboard(state->scope_);
       }
     }
-    std::stable_partition(state->outgoing_.begin(), state->outgoing_.end(),
-                          [](const TransitionSegmentBase* t) { return t->IsGuarded(); });
+    OrderOutgoing(state->outgoing_);
   }
   for (const auto& transition : owned_transitions_) {
     ComputeTransition(*transition);
@@ -296,12 +315,15 @@ void EngineCore::Activate() {
   if (!options_.inline_activities && options_.worker_threads > 0 && !pool_) {
     pool_ = std::make_unique<WorkerPool>(options_.worker_threads);
   }
-  if (!listener_) {
-    listener_ = hub_.AddListener([this] { Wake(); });
-  }
   CallUserInits();
   activated_.store(true, std::memory_order_release);
   EnterDefault(&chart_);
+  {
+    std::lock_guard<std::mutex> wake(wake_mutex_);
+    woken_ = true;  // the first evaluation
+    ++wake_generation_;
+  }
+  wake_cv_.notify_all();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -313,47 +335,48 @@ bool EngineCore::Step() {
   if (!IsActivated()) {
     Activate();
   }
+  return StepRoot();
+}
+
+bool EngineCore::StepRoot() {
+  step_number_.fetch_add(1, std::memory_order_relaxed);
   return StepState(&chart_);
 }
 
+// Monas' Step() of each kind of state. A region's running flag stops everything in the region;
+// the composite's own transitions come after its inside could not move, whatever is active in
+// it (not only its END).
 bool EngineCore::StepState(State* state) {
-  if (state->kind_ == StateKind::And) {
-    bool fired = false;
-    for (State* region : state->children_) {
-      fired = StepState(region) || fired;
-    }
-    return fired;
-  }
-  // An OR state: its active child first (inner transitions win), then the child's own
-  // transitions when it is not busy.
-  State* child = AsOr(state)->active_child_;
-  if (child == nullptr) {
-    return false;
-  }
-  if ((child->kind_ == StateKind::Or || child->kind_ == StateKind::And) && StepState(child)) {
-    return true;
-  }
-  if (IsBusy(child)) {
-    return false;
-  }
-  return TryTransitions(child);
-}
-
-bool EngineCore::IsBusy(const State* state) const {
   switch (state->kind_) {
-    case StateKind::Basic:
-      return static_cast<const BasicState*>(state)->running_.load(std::memory_order_acquire);
     case StateKind::Or: {
-      const OrState* orState = AsOr(state);
-      return orState->end_ == nullptr || orState->active_child_ != orState->end_;
-    }
-    case StateKind::And:
-      for (const State* region : state->children_) {
-        if (IsBusy(region)) return true;
+      if (state->region_->IsRunning()) {
+        return false;
       }
+      State* child = AsOr(state)->active_child_;
+      if (child != nullptr && StepState(child)) {
+        return true;
+      }
+      return TryTransitions(state);
+    }
+    case StateKind::And: {
+      // Whether a region was running is taken before the regions step, as Monas did.
+      bool running = false;
+      for (const State* region : state->children_) {
+        running = running || AsOr(region)->IsRunning();
+      }
+      bool fired = false;
+      for (State* region : state->children_) {
+        fired = StepState(region) || fired;
+      }
+      if (fired) {
+        return true;
+      }
+      return !running && TryTransitions(state);
+    }
+    case StateKind::End:
       return false;
     default:
-      return false;
+      return TryTransitions(state);
   }
 }
 
@@ -392,6 +415,9 @@ bool EngineCore::FindChain(State* connector, std::size_t depth) {
 }
 
 bool EngineCore::TryTransitions(State* state) {
+  if (state->region_->IsRunning()) {
+    return false;
+  }
   for (TransitionSegmentBase* transition : state->outgoing_) {
     if (!EvalGuard(transition)) continue;
     if (transition->target_->kind_ != StateKind::Condition) {
@@ -548,11 +574,22 @@ void EngineCore::Launch(BasicState* state) {
     RunActivity(state);
     return;
   }
-  state->running_.store(true, std::memory_order_release);
-  running_activities_.fetch_add(1, std::memory_order_acq_rel);
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    state->region_->running_.fetch_add(1, std::memory_order_acq_rel);
+    running_activities_.fetch_add(1, std::memory_order_acq_rel);
+    if (state->running_.load(std::memory_order_acquire)) {
+      // Entered again (after an outer transition left it) while the last run goes on: one
+      // IActivity object never runs twice at once, so the worker runs it again afterwards.
+      ++state->relaunches_;
+      return;
+    }
+    state->running_.store(true, std::memory_order_release);
+  }
   pool_->Post([this, state] {
-    RunActivity(state);
-    FinishActivity(state);
+    do {
+      RunActivity(state);
+    } while (FinishActivity(state));
   });
 }
 
@@ -580,14 +617,23 @@ void EngineCore::RunActivity(BasicState* state) {
          (message.empty() ? std::string() : ": " + message));
 }
 
-void EngineCore::FinishActivity(BasicState* state) {
-  state->running_.store(false, std::memory_order_release);
+bool EngineCore::FinishActivity(BasicState* state) {
+  bool again = false;
   {
     std::lock_guard<std::mutex> lock(wake_mutex_);
+    state->region_->running_.fetch_sub(1, std::memory_order_acq_rel);
     running_activities_.fetch_sub(1, std::memory_order_acq_rel);
+    if (state->relaunches_ > 0) {
+      --state->relaunches_;
+      again = true;
+    } else {
+      state->running_.store(false, std::memory_order_release);
+    }
+    woken_ = true;
     ++wake_generation_;
   }
   wake_cv_.notify_all();
+  return again;
 }
 
 void EngineCore::WaitForActivities() {
@@ -599,30 +645,60 @@ void EngineCore::WaitForActivities() {
 // Running
 // ---------------------------------------------------------------------------------------------
 
+bool EngineCore::TakeWake() {
+  bool woken;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    woken = woken_;
+    woken_ = false;
+  }
+  const kse::messaging::TimePoint now = hub_.GetClock().Now();
+  for (kse::messaging::Blackboard* board : blackboards_) {
+    woken = board->TakeDueWakeups(now) || woken;
+  }
+  return woken;
+}
+
+bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  while (StepRoot()) {
+    if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
+      Report("RunUntilStable stopped after " + std::to_string(max_transitions) +
+             " transitions: the statechart does not settle");
+      return false;
+    }
+  }
+  return true;
+}
+
+bool EngineCore::RunIfWoken() {
+  Activate();
+  if (!TakeWake()) {
+    return false;
+  }
+  StepUntilQuiet(std::numeric_limits<std::size_t>::max(), 0);
+  return true;
+}
+
 bool EngineCore::RunUntilStable(std::size_t max_transitions) {
   Activate();
   const std::size_t first = transitions_taken_.load(std::memory_order_relaxed);
   for (;;) {
-    std::uint64_t seen;
-    {
-      std::lock_guard<std::mutex> lock(wake_mutex_);
-      seen = wake_generation_;
-    }
-    while (Step()) {
-      if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
-        Report("RunUntilStable stopped after " + std::to_string(max_transitions) +
-               " transitions: the statechart does not settle");
+    if (TakeWake()) {
+      if (!StepUntilQuiet(max_transitions, first)) {
         return false;
       }
+      continue;
     }
     std::unique_lock<std::mutex> lock(wake_mutex_);
-    // Stable only if nothing happened since these steps began: an activity that finished
-    // after the last Step() leaves running_activities_ at 0 but still needs a step.
-    if (running_activities_.load(std::memory_order_acquire) == 0 && wake_generation_ == seen) {
+    if (woken_) {
+      continue;
+    }
+    if (running_activities_.load(std::memory_order_acquire) == 0) {
       return true;
     }
-    wake_cv_.wait(lock, [&] {
-      return wake_generation_ != seen || running_activities_.load(std::memory_order_acquire) == 0;
+    wake_cv_.wait(lock, [this] {
+      return woken_ || running_activities_.load(std::memory_order_acquire) == 0;
     });
   }
 }
@@ -635,12 +711,12 @@ void EngineCore::Wake() {
   wake_cv_.notify_all();
 }
 
-std::optional<kse::messaging::TimePoint> EngineCore::NextDeadline() const {
+std::optional<kse::messaging::TimePoint> EngineCore::NextWakeup() const {
   std::optional<kse::messaging::TimePoint> next;
   for (const kse::messaging::Blackboard* board : blackboards_) {
-    auto deadline = board->NextDeadline();
-    if (deadline && (!next || *deadline < *next)) {
-      next = deadline;
+    auto wakeup = board->NextWakeup();
+    if (wakeup && (!next || *wakeup < *next)) {
+      next = wakeup;
     }
   }
   return next;
@@ -655,6 +731,7 @@ void EngineCore::Start() {
   {
     std::lock_guard<std::mutex> lock(wake_mutex_);
     stop_requested_ = false;
+    woken_ = true;  // a (re)started engine looks at its configuration first, as Monas' did
   }
   thread_ = std::thread([this] { Loop(); });
   started_.store(true, std::memory_order_release);
@@ -666,6 +743,7 @@ void EngineCore::Stop() {
     {
       std::lock_guard<std::mutex> lock(wake_mutex_);
       stop_requested_ = true;
+      ++wake_generation_;
     }
     wake_cv_.notify_all();
     thread_.join();
@@ -676,13 +754,12 @@ void EngineCore::Stop() {
 
 void EngineCore::Shutdown() {
   Stop();
-  if (listener_) {
-    hub_.RemoveListener(*listener_);
-    listener_.reset();
-  }
   pool_.reset();
 }
 
+// Monas' engine thread: `while (Step());`, then sleep until an activity returns or a timeout
+// worker wakes it. Waking more often (Wake(), the periodic look at the clock) changes nothing:
+// without a reason the engine does not step.
 void EngineCore::Loop() {
   const kse::messaging::Clock& clock = hub_.GetClock();
   for (;;) {
@@ -694,31 +771,35 @@ void EngineCore::Loop() {
       }
       seen = wake_generation_;
     }
-    bool more = false;
-    std::optional<kse::messaging::TimePoint> deadline;
+    std::optional<kse::messaging::TimePoint> wakeup;
     try {
-      std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
-      std::size_t steps = 0;
-      while (StepState(&chart_)) {
-        if (++steps >= kStepsPerBatch) {
-          more = true;
-          break;
+      if (TakeWake()) {
+        std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+        std::size_t steps = 0;
+        bool more = false;
+        while (StepRoot()) {
+          if (++steps >= kStepsPerBatch) {
+            more = true;  // look at Stop() between batches, then go on
+            break;
+          }
+        }
+        if (more) {
+          std::lock_guard<std::mutex> wake(wake_mutex_);
+          woken_ = true;
+          continue;
         }
       }
-      deadline = NextDeadline();
+      wakeup = NextWakeup();
     } catch (const std::exception& e) {
       Report(std::string("engine step failed: ") + e.what());
     } catch (...) {
       Report("engine step failed");
     }
-    if (more) {
-      continue;
-    }
     std::unique_lock<std::mutex> lock(wake_mutex_);
-    auto woken = [&] { return stop_requested_ || wake_generation_ != seen; };
-    auto wait = std::chrono::duration_cast<std::chrono::steady_clock::duration>(kIdleReevaluation);
-    if (deadline) {
-      const auto until = *deadline - clock.Now();
+    auto woken = [&] { return stop_requested_ || woken_ || wake_generation_ != seen; };
+    auto wait = std::chrono::duration_cast<std::chrono::steady_clock::duration>(kClockLook);
+    if (wakeup) {
+      const auto until = *wakeup - clock.Now();
       wait = std::max(std::chrono::steady_clock::duration::zero(), std::min(wait, until));
     }
     wake_cv_.wait_for(lock, wait, woken);
@@ -771,6 +852,7 @@ bool Statechart::IsStarted() const noexcept { return core_->IsStarted(); }
 void Statechart::Activate() { core_->Activate(); }
 bool Statechart::IsActivated() const noexcept { return core_->IsActivated(); }
 bool Statechart::Step() { return core_->Step(); }
+bool Statechart::RunIfWoken() { return core_->RunIfWoken(); }
 
 void Statechart::RunUntilStable() { RunUntilStable(1000000); }
 bool Statechart::RunUntilStable(std::size_t max_transitions) {
@@ -782,6 +864,7 @@ std::size_t Statechart::ActivityFailures() const noexcept { return core_->activi
 std::size_t Statechart::GuardFailures() const noexcept { return core_->guard_failures_.load(); }
 std::size_t Statechart::ActionFailures() const noexcept { return core_->action_failures_.load(); }
 std::size_t Statechart::TransitionsTaken() const noexcept { return core_->transitions_taken_.load(); }
+std::size_t Statechart::StepNumber() const noexcept { return core_->step_number_.load(); }
 std::size_t Statechart::RunningActivities() const noexcept {
   return core_->running_activities_.load();
 }

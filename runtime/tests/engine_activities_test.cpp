@@ -1,4 +1,5 @@
-// BASIC states and their activities, inline and on the worker pool; END; failing activities.
+// BASIC states and their activities, inline and on the worker pool; the regions' running flags;
+// END; failing activities.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -283,6 +284,79 @@ TEST_F(PooledActivities, DestroyingTheChartWaitsForRunningActivities) {
     ASSERT_TRUE(chart.Step());
   }
   EXPECT_EQ(finished->load(), 1);
+}
+
+TEST_F(PooledActivities, ARunningActivityStopsItsWholeRegionOnly) {
+  // Root: START -> Both (AND: R1 runs Slow inside a composite with an unguarded exit; R2 goes
+  // START -> Quick). While Slow runs, neither the composite's exit nor anything else in R1
+  // steps; R2 goes on.
+  Statechart chart("Root", hub, Pooled());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* both = chart.Add<AndState>("Both", &chart);
+  auto* r1 = chart.Add<OrState>("R1", both);
+  auto* r1Start = chart.Add<StartState>("R1_1", r1);
+  auto* comp = chart.Add<OrState>("Comp", r1);
+  auto* compStart = chart.Add<StartState>("Comp_1", comp);
+  auto gate = std::make_shared<Gate>();
+  auto started = Counter();
+  auto* slow = chart.Add<BasicState>("Slow", comp, std::make_unique<BlockingActivity>(gate, started));
+  auto* left = chart.Add<BasicState>("Left", r1);
+  auto* r2 = chart.Add<OrState>("R2", both);
+  auto* r2Start = chart.Add<StartState>("R2_1", r2);
+  auto* quick = chart.Add<BasicState>("Quick", r2);
+  chart.AddTransition(start, both);
+  chart.AddTransition(r1Start, comp);
+  chart.AddTransition(compStart, slow);
+  chart.AddTransition(comp, left);
+  chart.AddTransition(r2Start, quick);
+  chart.RunIfWoken();
+  ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "Comp", "Slow", "R2", "Quick"));
+  EXPECT_TRUE(r1->IsRunning());
+  EXPECT_FALSE(r2->IsRunning());
+  EXPECT_FALSE(chart.IsRunning()) << "the root's own region runs nothing";
+  EXPECT_EQ(slow->Region(), r1);
+  EXPECT_EQ(comp->Region(), r1);
+  EXPECT_EQ(both->Region(), &chart);
+  EXPECT_FALSE(chart.Step());
+  gate->Open();
+  ASSERT_TRUE(WaitUntil([&] { return chart.RunningActivities() == 0U; }));
+  chart.RunIfWoken();
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "Left", "R2", "Quick"));
+}
+
+TEST_F(PooledActivities, AStateEnteredAgainWhileItsActivityRunsRunsItAgainAfterwards) {
+  // Root: START -> Outer; Outer: START -> Both (AND; R1: START -> Work). While Work runs, R1
+  // stands still, but Outer (in the root's region) may move: its transition straight into Work
+  // leaves and enters Work again. The one IActivity object is never run twice at once: the
+  // second run starts when the first returns, and R1 runs until both are over.
+  Statechart chart("Root", hub, Pooled(4));
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* outer = chart.Add<OrState>("Outer", &chart);
+  auto* outerStart = chart.Add<StartState>("Outer_1", outer);
+  auto* both = chart.Add<AndState>("Both", outer);
+  auto* r1 = chart.Add<OrState>("R1", both);
+  auto* r1Start = chart.Add<StartState>("R1_1", r1);
+  auto gate = std::make_shared<Gate>();
+  auto started = Counter();
+  auto* work = chart.Add<BasicState>("Work", r1, std::make_unique<BlockingActivity>(gate, started));
+  auto once = Counter();
+  chart.AddTransition(start, outer);
+  chart.AddTransition(outerStart, both);
+  chart.AddTransition(r1Start, work);
+  chart.AddTransition(outer, work, If([once](Blackboard&) { return once->fetch_add(1) == 0; }));
+  while (chart.Step()) {
+  }
+  ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
+  EXPECT_EQ(once->load(), 2) << "tried twice: fired once, then false";
+  EXPECT_EQ(work->Launches(), 2U);
+  EXPECT_TRUE(r1->IsRunning());
+  EXPECT_EQ(chart.RunningActivities(), 2U);
+  gate->Open();
+  ASSERT_TRUE(WaitUntil([&] { return chart.RunningActivities() == 0U; }));
+  EXPECT_EQ(started->load(), 2);
+  EXPECT_FALSE(work->IsRunning());
+  EXPECT_FALSE(r1->IsRunning());
 }
 
 }  // namespace

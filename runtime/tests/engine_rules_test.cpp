@@ -1,5 +1,6 @@
-// The engine rules of reference §8 / docs/runtime-api.md, one scripted scenario each, checked
-// through ActiveStates(), hook logs and observers. Synchronous: Activate()/Step().
+// The engine rules of docs/semantics.md through the engine's own API, one scripted scenario each,
+// checked through ActiveStates(), hook logs and observers. Synchronous: Activate()/Step(). The
+// same rules on generated code: tests/conformance.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -80,10 +81,10 @@ TEST_F(EngineRules, NoStructuralChangesAfterActivation) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Inner transitions first; END completes a region
+// Inner transitions first; a composite moves when its inside cannot
 // ---------------------------------------------------------------------------------------------
 
-TEST_F(EngineRules, InnerTransitionsWinAndOuterOnesWaitForEnd) {
+TEST_F(EngineRules, InnerTransitionsWinAndTheCompositeMovesWhenItsInsideCannot) {
   Statechart chart("Root", hub, Inline());
   auto* start = chart.Add<StartState>("Root_1", &chart);
   auto* a = chart.Add<OrState>("A", &chart);
@@ -92,25 +93,19 @@ TEST_F(EngineRules, InnerTransitionsWinAndOuterOnesWaitForEnd) {
   auto* aEnd = chart.Add<EndState>("A_3", a);
   auto* b = chart.Add<BasicState>("B", &chart);
   auto outerEvals = Counter();
-  auto xDone = Flag(false);
   chart.AddTransition(start, a);
   chart.AddTransition(aStart, x);
-  chart.AddTransition(x, aEnd, When(xDone));
-  chart.AddTransition(a, b, When(Flag(true), outerEvals));  // always true, but only tried when A is done
+  chart.AddTransition(x, aEnd, Never());
+  chart.AddTransition(a, b, When(Flag(true), outerEvals));
 
   chart.Activate();
   EXPECT_TRUE(chart.Step());  // Root_1 -> A
-  EXPECT_TRUE(chart.Step());  // inner A_1 -> X
+  EXPECT_TRUE(chart.Step());  // inner A_1 -> X: the inside moved, A's own transition is not tried
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "A", "X"));
-  EXPECT_FALSE(chart.Step());  // X waits; A is not done, its transition is not tried
-  EXPECT_FALSE(chart.Step());
   EXPECT_EQ(outerEvals->load(), 0);
-
-  xDone->store(true);
-  EXPECT_TRUE(chart.Step());  // the inner X -> END fires; the outer one waits for the next step
-  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "A", "A_3"));
-  EXPECT_EQ(outerEvals->load(), 0);
-  EXPECT_TRUE(chart.Step());  // END completed A: A -> B
+  // X cannot move (its guard is false) and nothing runs: A tries its own transition, although
+  // its END was never reached.
+  EXPECT_TRUE(chart.Step());
   EXPECT_EQ(outerEvals->load(), 1);
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "B"));
 }
@@ -141,7 +136,7 @@ TEST_F(EngineRules, DeepestTransitionFiresFirstAcrossSeveralLevels) {
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Root_end"));
 }
 
-TEST_F(EngineRules, OrStateWithoutEndNeverLeaves) {
+TEST_F(EngineRules, OrStateWithoutEndLeavesWhenItsInsideIsIdle) {
   Statechart chart("Root", hub, Inline());
   auto* start = chart.Add<StartState>("Root_1", &chart);
   auto* forever = chart.Add<OrState>("Forever", &chart);
@@ -153,8 +148,26 @@ TEST_F(EngineRules, OrStateWithoutEndNeverLeaves) {
   chart.AddTransition(fStart, x);
   chart.AddTransition(forever, other, When(Flag(true), evals));
   chart.RunUntilStable();
-  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Forever", "X"));
-  EXPECT_EQ(evals->load(), 0);
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Other"));
+  EXPECT_EQ(evals->load(), 1);
+}
+
+TEST_F(EngineRules, EndNeverStepsAndAFalseExitKeepsTheComposite) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* a = chart.Add<OrState>("A", &chart);
+  auto* aStart = chart.Add<StartState>("A_1", a);
+  auto* aEnd = chart.Add<EndState>("A_2", a);
+  auto* b = chart.Add<BasicState>("B", &chart);
+  auto evals = Counter();
+  chart.AddTransition(start, a);
+  chart.AddTransition(aStart, aEnd);
+  chart.AddTransition(a, b, When(Flag(false), evals));
+  chart.RunUntilStable();
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "A", "A_2"));
+  EXPECT_EQ(evals->load(), 1);
+  EXPECT_FALSE(chart.Step());
+  EXPECT_EQ(evals->load(), 2);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -191,25 +204,25 @@ TEST_F(EngineRules, UnguardedTransitionFiresWhenNoGuardHolds) {
   EXPECT_EQ(evals->load(), 1);
 }
 
-TEST_F(EngineRules, AmongGuardedTransitionsModelOrderDecides) {
-  for (bool firstIsB1 : {true, false}) {
+TEST_F(EngineRules, AmongGuardedTransitionsTheLastCreatedIsTriedFirst) {
+  for (bool b1First : {true, false}) {
     Statechart chart("Root", hub, Inline());
     auto* start = chart.Add<StartState>("Root_1", &chart);
     auto* s = chart.Add<BasicState>("S", &chart);
     auto* b1 = chart.Add<BasicState>("B1", &chart);
     auto* b2 = chart.Add<BasicState>("B2", &chart);
     chart.AddTransition(start, s);
-    auto secondEvals = Counter();
-    if (firstIsB1) {
-      chart.AddTransition(s, b1, Always());
-      chart.AddTransition(s, b2, When(Flag(true), secondEvals));
-    } else {
+    auto firstEvals = Counter();
+    if (b1First) {
+      chart.AddTransition(s, b1, When(Flag(true), firstEvals));
       chart.AddTransition(s, b2, Always());
-      chart.AddTransition(s, b1, When(Flag(true), secondEvals));
+    } else {
+      chart.AddTransition(s, b2, When(Flag(true), firstEvals));
+      chart.AddTransition(s, b1, Always());
     }
     chart.RunUntilStable();
-    EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", firstIsB1 ? "B1" : "B2"));
-    EXPECT_EQ(secondEvals->load(), 0) << "the first true guard wins; later ones are not evaluated";
+    EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", b1First ? "B2" : "B1"));
+    EXPECT_EQ(firstEvals->load(), 0) << "the first true guard wins; later ones are not evaluated";
   }
 }
 
@@ -390,9 +403,9 @@ TEST_F(EngineRules, ConnectorChainBacktracksWhenALaterConnectorIsBlocked) {
   auto* x = chart.Add<BasicState>("X", &chart);
   auto* y = chart.Add<BasicState>("Y", &chart);
   chart.AddTransition(start, c1);
-  chart.AddTransition(c1, c2, Always(), Logs(&log, "C1->C2"));
-  chart.AddTransition(c2, x, Never());
   chart.AddTransition(c1, y, Always(), Logs(&log, "C1->Y"));
+  chart.AddTransition(c1, c2, Always(), Logs(&log, "C1->C2"));  // created last: tried first
+  chart.AddTransition(c2, x, Never());
   chart.RunUntilStable();
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Y"));
   EXPECT_THAT(log.Events(), ElementsAre("C1->Y"));
@@ -518,47 +531,59 @@ TEST_F(EngineRules, ASignalIsSeenOnceByEachRegion) {
   auto* a2 = chart.Add<BasicState>("A2", regions.r2);
   auto* b2 = chart.Add<BasicState>("B2", regions.r2);
   auto signalled = [] {
-    return If([](Blackboard& blk) { return blk.ReadSignal<HeadToBMessage>("events") != nullptr; },
-              {"events"});
+    return If(
+        [](Blackboard& blk) {
+          blk.ProcessMessages();
+          return blk.ReadSignal<HeadToBMessage>("events") != nullptr;
+        },
+        {"events"});
   };
   chart.AddTransition(regions.r1Start, a1, signalled());
   chart.AddTransition(a1, b1, signalled());
   chart.AddTransition(regions.r2Start, a2, signalled());
   chart.AddTransition(a2, b2, signalled());
-  chart.RunUntilStable();
+  while (chart.Step()) {
+  }
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "R1_1", "R2", "R2_1"));
   EXPECT_EQ(hub.SubscriberCount("events"), 2U);
 
   HeadToBMessage message;
   message.set_ballfound(1);
   chart.RootBlackboard().Publish("events", Kind::Signal, message);
-  chart.RunUntilStable();
+  while (chart.Step()) {
+  }
   // Each region consumed its own copy of the one signal, and only once.
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "A1", "R2", "A2"));
 
   chart.RootBlackboard().Publish("events", Kind::Signal, message);
-  chart.RunUntilStable();
+  while (chart.Step()) {
+  }
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "B1", "R2", "B2"));
 }
 
-TEST_F(EngineRules, AndStateIsLeftOnlyWhenEveryRegionIsDone) {
-  Statechart chart("Root", hub, Inline());
+TEST_F(EngineRules, AndStateIsLeftWhenNoRegionMovesAndNoneRuns) {
+  Statechart chart("Root", hub, Pooled());
   auto regions = BuildTwoRegions(chart);
   auto* end1 = chart.Add<EndState>("R1_2", regions.r1);
-  auto* x2 = chart.Add<BasicState>("X2", regions.r2);
+  auto gate = std::make_shared<Gate>();
+  auto started = Counter();
+  auto* x2 = chart.Add<BasicState>("X2", regions.r2, std::make_unique<BlockingActivity>(gate, started));
   auto* end2 = chart.Add<EndState>("R2_3", regions.r2);
   auto* after = chart.Add<BasicState>("After", &chart);
-  auto x2Done = Flag(false);
   auto leaveEvals = Counter();
   chart.AddTransition(regions.r1Start, end1);
   chart.AddTransition(regions.r2Start, x2);
-  chart.AddTransition(x2, end2, When(x2Done));
+  chart.AddTransition(x2, end2, Never());
   chart.AddTransition(regions.both, after, When(Flag(true), leaveEvals));
-  chart.RunUntilStable();
+  chart.RunIfWoken();
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "R1_2", "R2", "X2"));
-  EXPECT_EQ(leaveEvals->load(), 0);
-  x2Done->store(true);
-  chart.RunUntilStable();
+  EXPECT_TRUE(regions.r2->IsRunning());
+  EXPECT_FALSE(regions.r1->IsRunning());
+  EXPECT_EQ(leaveEvals->load(), 0) << "X2 runs in a region: the AND state waits";
+  gate->Open();
+  ASSERT_TRUE(WaitUntil([&] { return chart.RunningActivities() == 0U; }));
+  EXPECT_TRUE(chart.RunIfWoken()) << "the activity's end woke the engine";
+  // X2's own transition is false and nothing runs: the AND state leaves, its regions unfinished.
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "After"));
   EXPECT_EQ(leaveEvals->load(), 1);
 }
@@ -590,7 +615,7 @@ TEST_F(EngineRules, RegionsExitInReverseOrderWhenTheAndStateIsLeft) {
 // Timeouts (ManualClock)
 // ---------------------------------------------------------------------------------------------
 
-TEST_F(EngineRules, TimeoutCheckHoldsOnlyOnceTheClockPassesTheDeadline) {
+TEST_F(EngineRules, TimeoutCheckHoldsOnlyOnceTheClockPassesTheWakeupTime) {
   Statechart chart("Root", hub, Inline());
   auto* start = chart.Add<StartState>("Root_1", &chart);
   auto* waiting = chart.Add<BasicState>("Waiting", &chart);
@@ -598,9 +623,15 @@ TEST_F(EngineRules, TimeoutCheckHoldsOnlyOnceTheClockPassesTheDeadline) {
   chart.AddTransition(start, waiting, nullptr, std::make_unique<TimeoutAction>("behavior", 250));
   chart.AddTransition(waiting, done, TimeoutCheck("behavior"));
   chart.Activate();
-  EXPECT_TRUE(chart.RootBlackboard().TimeoutExpired("behavior")) << "no timer yet";
+  auto timeout = chart.RootBlackboard().ReadState<TimeoutMsg>("behavior");
+  ASSERT_NE(timeout, nullptr) << "every TimeoutAction publishes an empty TimeoutMsg at start";
+  EXPECT_TRUE(timeout->wakeup().empty());
+  EXPECT_FALSE(statechart_engine::TimeoutCheck(chart.RootBlackboard(), timeout))
+      << "no wake-up time: false";
   ASSERT_TRUE(chart.Step());
-  EXPECT_FALSE(chart.RootBlackboard().TimeoutExpired("behavior"));
+  timeout = chart.RootBlackboard().ReadState<TimeoutMsg>("behavior");
+  EXPECT_FALSE(timeout->wakeup().empty());
+  EXPECT_EQ(chart.RootBlackboard().NextWakeup(), clock.Now() + std::chrono::milliseconds(250));
   EXPECT_FALSE(chart.Step());
   clock.Advance(std::chrono::milliseconds(249));
   EXPECT_FALSE(chart.Step());
@@ -608,6 +639,28 @@ TEST_F(EngineRules, TimeoutCheckHoldsOnlyOnceTheClockPassesTheDeadline) {
   clock.Advance(std::chrono::milliseconds(1));
   EXPECT_TRUE(chart.Step());
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Done"));
+}
+
+TEST_F(EngineRules, TheEngineRunsOnlyWhenWokenByATimerOrAnActivity) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* waiting = chart.Add<BasicState>("Waiting", &chart);
+  auto* done = chart.Add<BasicState>("Done", &chart);
+  auto evals = Counter();
+  chart.AddTransition(start, waiting, nullptr, std::make_unique<TimeoutAction>("behavior", 100));
+  chart.AddTransition(waiting, done, When(Flag(false), evals));
+  EXPECT_TRUE(chart.RunIfWoken()) << "activation wakes it";
+  EXPECT_EQ(evals->load(), 1);
+  chart.Wake();
+  hub.Publish("behavior", Kind::State, std::make_shared<HeadToBMessage>());
+  EXPECT_FALSE(chart.RunIfWoken()) << "a publish or a look at the clock is no reason";
+  clock.Advance(std::chrono::milliseconds(99));
+  EXPECT_FALSE(chart.RunIfWoken());
+  EXPECT_EQ(evals->load(), 1);
+  clock.Advance(std::chrono::milliseconds(1));
+  EXPECT_TRUE(chart.RunIfWoken()) << "the wake-up time passed";
+  EXPECT_EQ(evals->load(), 2);
+  EXPECT_FALSE(chart.RunIfWoken());
 }
 
 TEST_F(EngineRules, PollingSelfLoopRearmsItsTimer) {
@@ -629,9 +682,7 @@ TEST_F(EngineRules, PollingSelfLoopRearmsItsTimer) {
   clock.Advance(std::chrono::milliseconds(200));  // 600 ms
   chart.RunUntilStable();
   EXPECT_EQ(runs->load(), 3);
-  ASSERT_TRUE(chart.RootBlackboard().NextDeadline().has_value());
-  EXPECT_EQ(*chart.RootBlackboard().NextDeadline(),
-            clock.Now() + std::chrono::milliseconds(250));
+  EXPECT_EQ(chart.RootBlackboard().NextWakeup(), clock.Now() + std::chrono::milliseconds(250));
 }
 
 // ---------------------------------------------------------------------------------------------

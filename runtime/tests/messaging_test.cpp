@@ -1,4 +1,5 @@
-// kse::messaging: clocks, the hub, and the State / Signal / Data semantics of blackboards.
+// kse::messaging: clocks, the hub, blackboards as snapshots (ProcessMessages), the State / Signal /
+// Data semantics, and wake-up times.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -54,6 +55,7 @@ TEST_F(Messaging, StateKeepsTheLastValue) {
   EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior"), nullptr);
   hub.Publish("behavior", Kind::State, Head(1));
   hub.Publish("behavior", Kind::State, Head(2));
+  board.ProcessMessages();
   auto state = board.ReadState<HeadToBMessage>("behavior");
   ASSERT_NE(state, nullptr);
   EXPECT_EQ(state->ballfound(), 2);
@@ -70,6 +72,7 @@ TEST_F(Messaging, MessagesAreKeyedByTopicAndType) {
   hub.Publish("behavior", Kind::State, Head(3));
   hub.Publish("behavior", Kind::State, fall);
   hub.Publish("other", Kind::State, Head(4));
+  board.ProcessMessages();
   EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 3);
   EXPECT_EQ(board.ReadState<FallMessage>("behavior")->fall(), -1);
   EXPECT_EQ(board.ReadState<HeadToBMessage>("other")->ballfound(), 4);
@@ -80,6 +83,7 @@ TEST_F(Messaging, KindsAreKeptApart) {
   Blackboard board(hub);
   board.Subscribe("behavior");
   hub.Publish("behavior", Kind::Signal, Head(1));
+  board.ProcessMessages();
   EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior"), nullptr);
   EXPECT_EQ(board.ReadData<HeadToBMessage>("behavior"), nullptr);
   EXPECT_NE(board.ReadSignal<HeadToBMessage>("behavior"), nullptr);
@@ -92,6 +96,8 @@ TEST_F(Messaging, OnlySubscribedTopicsAreDelivered) {
   EXPECT_EQ(hub.SubscriberCount("behavior"), 1U);
   hub.Publish("vision", Kind::Signal, Head(1));
   hub.Publish("vision", Kind::State, Head(1));
+  board.ProcessMessages();
+  EXPECT_EQ(board.PendingMessages(), 0U);
   EXPECT_EQ(board.ReadSignal<HeadToBMessage>("vision"), nullptr);
   EXPECT_EQ(board.ReadState<HeadToBMessage>("vision"), nullptr);
   EXPECT_TRUE(board.IsSubscribed("behavior"));
@@ -103,6 +109,7 @@ TEST_F(Messaging, LateSubscriberStartsWithTheCurrentState) {
   hub.Publish("worldstate", Kind::Signal, Head(6));
   Blackboard board(hub);
   board.Subscribe("worldstate");
+  board.ProcessMessages();
   ASSERT_NE(board.ReadState<HeadToBMessage>("worldstate"), nullptr);
   EXPECT_EQ(board.ReadState<HeadToBMessage>("worldstate")->ballfound(), 5);
   EXPECT_EQ(board.ReadSignal<HeadToBMessage>("worldstate"), nullptr) << "signals are not retained";
@@ -113,6 +120,7 @@ TEST_F(Messaging, SignalsAreReadOnceInOrder) {
   board.Subscribe("behavior");
   hub.Publish("behavior", Kind::Signal, Head(1));
   hub.Publish("behavior", Kind::Signal, Head(2));
+  board.ProcessMessages();
   EXPECT_EQ(board.PendingSignals("behavior", "HeadToBMessage"), 2U);
   EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 1);
   EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 2);
@@ -125,6 +133,8 @@ TEST_F(Messaging, EachBlackboardSeesASignalOnce) {
   one.Subscribe("behavior");
   two.Subscribe("behavior");
   hub.Publish("behavior", Kind::Signal, Head(9));
+  one.ProcessMessages();
+  two.ProcessMessages();
   EXPECT_NE(one.ReadSignal<HeadToBMessage>("behavior"), nullptr);
   EXPECT_EQ(one.ReadSignal<HeadToBMessage>("behavior"), nullptr);
   EXPECT_NE(two.ReadSignal<HeadToBMessage>("behavior"), nullptr);
@@ -137,6 +147,8 @@ TEST_F(Messaging, SignalQueueIsBounded) {
   for (std::size_t i = 0; i < Blackboard::kSignalQueueLimit + 5; ++i) {
     hub.Publish("behavior", Kind::Signal, Head(static_cast<int>(i)));
   }
+  EXPECT_EQ(board.PendingMessages(), Blackboard::kSignalQueueLimit) << "the inbox is bounded too";
+  board.ProcessMessages();
   EXPECT_EQ(board.PendingSignals("behavior", "HeadToBMessage"), Blackboard::kSignalQueueLimit);
   EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 5) << "oldest dropped";
 }
@@ -150,6 +162,7 @@ TEST_F(Messaging, DataKeepsATimeStampedBoundedHistory) {
     hub.Publish("worldstate", Kind::Data, Head(i));
     clock.Advance(milliseconds(10));
   }
+  board.ProcessMessages();
   EXPECT_EQ(board.ReadData<HeadToBMessage>("worldstate")->ballfound(), 149);
   auto all = board.ReadDataHistory<HeadToBMessage>("worldstate", begin);
   ASSERT_EQ(all.size(), Blackboard::kDataHistoryLimit);
@@ -166,7 +179,7 @@ TEST_F(Messaging, DataKeepsATimeStampedBoundedHistory) {
   EXPECT_EQ(board.ReadData<HeadToBMessage>("worldstate")->ballfound(), 149);
 }
 
-TEST_F(Messaging, BlackboardPublishCopiesAndGoesThroughTheHub) {
+TEST_F(Messaging, BlackboardPublishCopiesShowsAtOnceAndGoesThroughTheHub) {
   Blackboard writer(hub, "writer");
   Blackboard reader(hub, "reader");
   reader.Subscribe("behavior");
@@ -174,9 +187,66 @@ TEST_F(Messaging, BlackboardPublishCopiesAndGoesThroughTheHub) {
   message.set_ballfound(1);
   writer.Publish("behavior", Kind::State, message);
   message.set_ballfound(2);  // the published copy does not change
+  EXPECT_EQ(writer.ReadState<HeadToBMessage>("behavior")->ballfound(), 1)
+      << "the publisher sees its own message at once, subscribed or not";
+  EXPECT_EQ(reader.ReadState<HeadToBMessage>("behavior"), nullptr) << "others at their next refresh";
+  reader.ProcessMessages();
   EXPECT_EQ(reader.ReadState<HeadToBMessage>("behavior")->ballfound(), 1);
-  EXPECT_EQ(writer.ReadState<HeadToBMessage>("behavior"), nullptr) << "writer is not subscribed";
   EXPECT_EQ(hub.PublishedCount(), 1U);
+}
+
+TEST_F(Messaging, ABlackboardIsASnapshotUntilItProcessesItsMessages) {
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  hub.Publish("behavior", Kind::State, Head(1));
+  hub.Publish("behavior", Kind::Signal, Head(2));
+  hub.Publish("behavior", Kind::Data, Head(3));
+  EXPECT_EQ(board.PendingMessages(), 3U);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(board.ReadData<HeadToBMessage>("behavior"), nullptr);
+  board.ProcessMessages();
+  EXPECT_EQ(board.PendingMessages(), 0U);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 1);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 2);
+  EXPECT_EQ(board.ReadData<HeadToBMessage>("behavior")->ballfound(), 3);
+  // A newer State waits in the inbox; the snapshot keeps the old one until the next refresh.
+  hub.Publish("behavior", Kind::State, Head(4));
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 1);
+  board.ProcessMessages();
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 4);
+}
+
+TEST_F(Messaging, APublisherNeverGetsItsOwnMessageBack) {
+  Blackboard board(hub, "board");
+  board.Subscribe("behavior");
+  HeadToBMessage mine;
+  mine.set_ballfound(7);
+  board.Publish("behavior", Kind::Signal, mine);
+  board.Publish("behavior", Kind::State, mine);
+  EXPECT_EQ(board.PendingMessages(), 0U) << "no echo through the hub";
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 7);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("behavior"), nullptr) << "seen once";
+  // Nor as retained state when it subscribes to a topic it published on before.
+  board.Publish("motion", Kind::State, mine);
+  board.Subscribe("motion");
+  EXPECT_EQ(board.PendingMessages(), 0U);
+}
+
+TEST_F(Messaging, WakeupTimesAreTakenOnceDue) {
+  Blackboard board(hub);
+  EXPECT_FALSE(board.NextWakeup().has_value());
+  EXPECT_FALSE(board.TakeDueWakeups(clock.Now()));
+  board.ScheduleWakeup(clock.Now() + milliseconds(250));
+  board.ScheduleWakeup(clock.Now() + milliseconds(100));
+  board.ScheduleWakeup(clock.Now() + milliseconds(100));
+  EXPECT_EQ(*board.NextWakeup(), clock.Now() + milliseconds(100));
+  EXPECT_FALSE(board.TakeDueWakeups(clock.Now() + milliseconds(99)));
+  EXPECT_TRUE(board.TakeDueWakeups(clock.Now() + milliseconds(100))) << "both at 100 ms, taken together";
+  EXPECT_EQ(*board.NextWakeup(), clock.Now() + milliseconds(250));
+  EXPECT_FALSE(board.TakeDueWakeups(clock.Now() + milliseconds(100)));
+  EXPECT_TRUE(board.TakeDueWakeups(clock.Now() + milliseconds(1000)));
+  EXPECT_FALSE(board.NextWakeup().has_value());
 }
 
 TEST_F(Messaging, NullMessagesAreIgnored) {
@@ -193,7 +263,7 @@ TEST_F(Messaging, ListenersAreCalledAfterEveryPublishUntilRemoved) {
   bool delivered = false;
   auto id = hub.AddListener([&] {
     ++calls;
-    delivered = board.ReadState<HeadToBMessage>("behavior") != nullptr;
+    delivered = board.PendingMessages() != 0;
   });
   hub.Publish("behavior", Kind::State, Head(1));
   hub.Publish("unrelated", Kind::Signal, Head(1));
@@ -214,31 +284,6 @@ TEST_F(Messaging, DestroyedBlackboardsUnsubscribe) {
   hub.Publish("behavior", Kind::Signal, Head(1));  // must not touch the destroyed board
 }
 
-TEST_F(Messaging, TimersExpireAtTheirDeadline) {
-  Blackboard board(hub);
-  EXPECT_TRUE(board.TimeoutExpired("behavior")) << "no timer: nothing pending";
-  EXPECT_FALSE(board.NextDeadline().has_value());
-  board.SetTimeout("behavior", milliseconds(250));
-  board.SetTimeout("motion", milliseconds(100));
-  EXPECT_FALSE(board.TimeoutExpired("behavior"));
-  ASSERT_TRUE(board.NextDeadline().has_value());
-  EXPECT_EQ(*board.NextDeadline(), clock.Now() + milliseconds(100));
-  clock.Advance(milliseconds(100));
-  EXPECT_TRUE(board.TimeoutExpired("motion"));
-  EXPECT_FALSE(board.TimeoutExpired("behavior"));
-  EXPECT_EQ(*board.NextDeadline(), clock.Now() + milliseconds(150));
-  clock.Advance(milliseconds(149));
-  EXPECT_FALSE(board.TimeoutExpired("behavior"));
-  clock.Advance(milliseconds(1));
-  EXPECT_TRUE(board.TimeoutExpired("behavior"));
-  EXPECT_FALSE(board.NextDeadline().has_value());
-  // Setting again restarts the timer.
-  board.SetTimeout("behavior", milliseconds(50));
-  EXPECT_FALSE(board.TimeoutExpired("behavior"));
-  clock.Advance(milliseconds(50));
-  EXPECT_TRUE(board.TimeoutExpired("behavior"));
-}
-
 TEST_F(Messaging, ConcurrentPublishersAndReaders) {
   Blackboard board(hub);
   board.Subscribe("worldstate");
@@ -251,7 +296,8 @@ TEST_F(Messaging, ConcurrentPublishersAndReaders) {
       if (board.ReadSignal<HeadToBMessage>("worldstate")) ++signals;
       board.ReadState<HeadToBMessage>("worldstate");
       board.ReadDataHistory<HeadToBMessage>("worldstate", TimePoint{});
-      board.NextDeadline();
+      board.ProcessMessages();
+      board.NextWakeup();
     }
   });
   std::vector<std::thread> writers;
@@ -261,13 +307,14 @@ TEST_F(Messaging, ConcurrentPublishersAndReaders) {
         hub.Publish("worldstate", Kind::Signal, Head(i));
         hub.Publish("worldstate", Kind::State, Head(i));
         hub.Publish("worldstate", Kind::Data, Head(i));
-        if (i % 50 == 0) board.SetTimeout("t" + std::to_string(t), milliseconds(i));
+        if (i % 50 == 0) board.ScheduleWakeup(clock.Now() + milliseconds(i));
       }
     });
   }
   for (auto& writer : writers) writer.join();
   done.store(true);
   reader.join();
+  board.ProcessMessages();
   while (board.ReadSignal<HeadToBMessage>("worldstate")) ++signals;
   EXPECT_EQ(signals.load(), kThreads * kEach);
   EXPECT_EQ(hub.PublishedCount(), static_cast<std::size_t>(3 * kThreads * kEach));

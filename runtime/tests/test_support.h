@@ -108,9 +108,9 @@ inline std::unique_ptr<ICondition> If(std::function<bool(Blackboard&)> eval,
   return std::make_unique<LambdaCondition>(std::move(eval), std::move(topics));
 }
 
-/// `TimeoutCheck(topic)` as the generator writes it.
+/// `[TimeoutCheck(topic)]` as the generator writes it.
 inline std::unique_ptr<ICondition> TimeoutCheck(std::string topic) {
-  return If([topic](Blackboard& blk) { return blk.TimeoutExpired(topic); });
+  return std::make_unique<TimeoutCondition>(std::move(topic));
 }
 
 /// An action that logs a text.

@@ -18,32 +18,37 @@
 namespace statechart_engine {
 
 struct Options {
-  /// Run activities on the engine's thread, inside the transition that enters their state.
+  /// Run activities on the calling thread, inside the transition that enters their state (the
+  /// simulator does, so that a match is deterministic). An inline activity never leaves its
+  /// region running.
   bool inline_activities = false;
-  /// Size of the activity worker pool (0 behaves like inline_activities = true).
-  std::size_t worker_threads = 2;
+  /// Size of the activity worker pool, as Monas' (0 behaves like inline_activities = true).
+  std::size_t worker_threads = 10;
 };
 
 /// The root of a statechart: an OR state that owns every state and transition created through
 /// it, the root blackboard, the activity worker pool and (between Start() and Stop()) the
 /// engine thread.
 ///
-/// Semantics (docs/runtime-api.md, reference §8):
+/// The rules are those of the Monas engine the original KSE generated code for; docs/semantics.md
+/// states them with an example. In short:
 /// - Activating an OR state activates its START; an AND state activates all its regions.
-/// - One Step() steps the root: stepping an OR state steps its active child first (inner
-///   transitions win: if anything fired inside, nothing else is tried on that path), then, if
-///   the active child is not busy, tries the child's outgoing transitions, guarded ones before
-///   unguarded ones, each group in model order; the first whose guard holds fires. An AND state
-///   steps each of its regions. A BASIC state is busy while its activity runs, an OR state
-///   until its END is active, an AND state until all its regions are done.
-/// - Firing: exit the source's active descendants, the source and its ancestors below the
-///   lowest common ancestor (innermost first, OnExit), run the action, enter the target's
-///   ancestors below the LCA top-down and the target (OnEntry), then its default completion
-///   (START of an OR state, every region of an AND state, the activity of a BASIC state).
-///   AND regions are exited in reverse document order and entered in document order.
-/// - A transition into a ConditionConnector fires only together with a chain of connector
-///   transitions whose guards hold (tried in the same order, backtracking) that ends outside
-///   connectors; all guards are evaluated first, then the segments fire in order.
+/// - Every state belongs to a region (the nearest AND region, or the root) with a running flag:
+///   entering a BASIC state starts its activity and sets the flag until the activity returns;
+///   while it is set, nothing in the region steps.
+/// - One Step() steps the root. Stepping an OR state steps its active child; if nothing fired
+///   there and the region is not running, the OR state tries its own outgoing transitions. An
+///   AND state steps every region; if none fired and none is running, it tries its own. END
+///   never steps; any other state tries its own transitions.
+/// - A state's transitions are tried guarded ones first, in reverse model order, then unguarded
+///   ones in model order; the first whose guard holds fires. A transition into a CONDITION
+///   connector fires only together with a chain of connector transitions whose guards hold
+///   (same order), taken as one step.
+/// - Firing exits the source and its ancestors below the lowest common ancestor (innermost
+///   first), runs the action, enters the target's ancestors top-down and the target.
+/// - The engine re-evaluates (steps until nothing fires) only when it is woken: once activated,
+///   when an activity returns, and when a wake-up time asked for by a TimeoutAction passes. A
+///   publish does not wake it; guards read blackboard snapshots (Blackboard::ProcessMessages).
 /// - Guards and actions that throw are reported on standard error and counted; a throwing
 ///   guard counts as false.
 class Statechart : public OrState {
@@ -76,9 +81,8 @@ class Statechart : public OrState {
     return raw;
   }
 
-  /// Activates (if not yet) and runs the engine on its own thread until Stop(). The engine
-  /// re-evaluates when a message is published, an activity ends, a timer expires or Wake() is
-  /// called (and at least once a second).
+  /// Activates (if not yet) and runs the engine on its own thread until Stop(): whenever it is
+  /// woken (an activity returned, a wake-up time passed), it steps until nothing fires.
   void Start();
   /// Stops the engine thread and waits for running activities. The configuration is kept;
   /// Start() resumes. Safe to call when not started.
@@ -90,10 +94,15 @@ class Statechart : public OrState {
   /// std::logic_error when the structure is invalid (e.g. an OR state without START).
   void Activate();
   bool IsActivated() const noexcept;
-  /// One run-to-completion step (activates first if needed): true when a transition fired.
+  /// One step now, woken or not (activates first if needed): true when a transition fired.
   bool Step();
-  /// Steps, waits for running activities and steps again until nothing fires and nothing runs.
-  /// Gives up after 1,000,000 transitions (a statechart that loops forever), with a warning.
+  /// What the engine thread does when it wakes: if the engine is woken (just activated, an
+  /// activity returned, or a wake-up time has passed on its clock), steps until nothing fires.
+  /// Does not wait for running activities. True when it stepped.
+  bool RunIfWoken();
+  /// RunIfWoken(), then waits for running activities and runs again, until nothing runs and the
+  /// engine is not woken. Wake-up times still ahead are not waited for. Gives up after
+  /// 1,000,000 transitions (a statechart that loops forever), with a warning.
   void RunUntilStable();
   /// As above with an explicit bound on the transitions taken; false when it was reached.
   bool RunUntilStable(std::size_t max_transitions);
@@ -108,13 +117,15 @@ class Statechart : public OrState {
   std::size_t ActionFailures() const noexcept;
   /// Transition segments taken so far.
   std::size_t TransitionsTaken() const noexcept;
+  /// Steps begun so far (an observer sees the number of the step that took the segment).
+  std::size_t StepNumber() const noexcept;
   /// Activities started and not finished yet.
   std::size_t RunningActivities() const noexcept;
 
   /// Called on the engine's thread for every transition segment taken, after it completed.
   void SetObserver(Observer observer);
-  /// Makes the engine thread re-evaluate (e.g. after a ManualClock moved or a guard reads
-  /// something other than messages).
+  /// Makes the engine thread look at its clock again (e.g. after a ManualClock moved): it
+  /// steps if a wake-up time has passed. It does not make the engine re-evaluate otherwise.
   void Wake();
 
   kse::messaging::MessageHub& Hub() const noexcept;

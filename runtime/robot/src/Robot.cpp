@@ -61,6 +61,7 @@ MotionCommands Robot::Step(const Perception& perception) {
 
 	statechart_->Chart().RunUntilStable();
 
+	motion_.ProcessMessages();
 	MotionCommands commands;
 	while (auto walk = motion_.ReadSignal<MotionWalkMessage>("motion")) {
 		if (walk->command() == "setWalkTargetVelocity" && walk->parameter_size() >= 3) {

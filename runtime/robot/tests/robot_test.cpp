@@ -27,6 +27,7 @@ public:
 		_blk->Subscribe("behavior");
 	}
 	int Execute() override {
+		_blk->ProcessMessages();
 		const auto game = _blk->ReadState<GameStateMessage>("worldstate");
 		const auto world = _blk->ReadData<WorldInfo>("worldstate");
 		const auto head = _blk->ReadState<HeadToBMessage>("behavior");
@@ -50,11 +51,6 @@ public:
 	std::string GetName() override { return "Echo"; }
 };
 
-class Tick : public statechart_engine::ICondition {
-public:
-	bool Eval() override { return _blk->TimeoutExpired("tick"); }
-};
-
 // START -> Echo, and Echo loops once per 10 ms of clock.
 class EchoChart : public statechart_engine::IStatechart {
 public:
@@ -63,7 +59,7 @@ public:
 		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
 		auto* echo = chart_.Add<BasicState>("Node_Echo", &chart_, std::make_unique<Echo>());
 		chart_.AddTransition(start, echo, nullptr, std::make_unique<TimeoutAction>("tick", 10));
-		chart_.AddTransition(echo, echo, std::make_unique<Tick>(), std::make_unique<TimeoutAction>("tick", 10));
+		chart_.AddTransition(echo, echo, std::make_unique<TimeoutCondition>("tick"), std::make_unique<TimeoutAction>("tick", 10));
 	}
 	void Start() override { chart_.Start(); }
 	void Stop() override { chart_.Stop(); }

@@ -19,6 +19,7 @@ class Chase : public statechart_engine::IActivity {
 public:
 	void UserInit() override { _blk->Subscribe("worldstate"); }
 	int Execute() override {
+		_blk->ProcessMessages();
 		const auto game = _blk->ReadState<GameStateMessage>("worldstate");
 		const auto world = _blk->ReadData<WorldInfo>("worldstate");
 		MotionWalkMessage walk;
@@ -59,11 +60,6 @@ public:
 	std::string GetName() override { return "Idle"; }
 };
 
-class Every : public statechart_engine::ICondition {
-public:
-	bool Eval() override { return _blk->TimeoutExpired("tick"); }
-};
-
 // START -> Chase, and Chase again every 100 ms
 class ChaserChart : public statechart_engine::IStatechart {
 public:
@@ -72,7 +68,7 @@ public:
 		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
 		auto* chase = chart_.Add<BasicState>("Node_Chase", &chart_, std::make_unique<Chase>());
 		chart_.AddTransition(start, chase, nullptr, std::make_unique<TimeoutAction>("tick", 100));
-		chart_.AddTransition(chase, chase, std::make_unique<Every>(), std::make_unique<TimeoutAction>("tick", 100));
+		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tick"), std::make_unique<TimeoutAction>("tick", 100));
 	}
 	void Start() override { chart_.Start(); }
 	void Stop() override { chart_.Stop(); }

@@ -1,5 +1,6 @@
 // Walk so that the ball ends at the kicking spot in front of a foot (x 0.122 m,
-// y ±0.03 m: readyToKick), facing the opponent goal on the way when localised.
+// y ±0.03 m: readyToKick), facing the opponent goal on the way when localised. A goalkeeper
+// that a shot comes at, too close to walk into its way, dives for it instead.
 #include "ApproachBall.h"
 
 #include <cmath>
@@ -20,6 +21,14 @@ int ApproachBall::Execute() {
 	if (!world.BallSeen()) {
 		examples::Stop(*_blk);
 		return 0;
+	}
+	if (examples::IsGoalkeeper(world)) {
+		const auto crossing = examples::ShotCrossing(world);
+		const int dive = crossing ? examples::DiveSide(*crossing) : 0;
+		if (dive != 0) {
+			examples::Action(*_blk, dive > 0 ? "goalieLeft" : "goalieRight");
+			return 0;
+		}
 	}
 	const auto& ball = world.TheBall();
 	const float side = ball.relativey() >= 0 ? 1.0f : -1.0f;

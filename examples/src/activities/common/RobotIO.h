@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <kse/behavior/BehaviorConst.h>
@@ -32,7 +33,9 @@ struct World {
 	std::shared_ptr<const HeadToBMessage> head;
 	std::shared_ptr<const PositionMessage> position;
 
+	/** Refreshes the blackboard (as every Monas activity did first) and reads it. */
 	static World Read(kse::messaging::Blackboard& blackboard) {
+		blackboard.ProcessMessages();
 		World world;
 		world.game = blackboard.ReadState<GameStateMessage>("worldstate");
 		world.info = blackboard.ReadData<WorldInfo>("worldstate");
@@ -107,6 +110,26 @@ inline void WalkToFieldPose(kse::messaging::Blackboard& blackboard, const World&
 	const float sideways = std::sin(bearing) * std::min(1.0f, distance);
 	Walk(blackboard, forward, sideways, 1.5f * bearing);
 }
+
+/**
+ * Where a ball rolling at the robot crosses its line (y in the robot frame, metres), when it
+ * comes faster than {@code min_speed} m/s: what a goalkeeper dives for.
+ */
+inline std::optional<float> ShotCrossing(const World& world, float min_speed = 0.4f) {
+	if (!world.BallSeen()) return std::nullopt;
+	const auto& ball = world.TheBall();
+	if (ball.relativexspeed() >= -min_speed || ball.relativex() <= 0) return std::nullopt;
+	const float time = ball.relativex() / -ball.relativexspeed();
+	return ball.relativey() + ball.relativeyspeed() * time;
+}
+
+/** The side to dive to for a shot crossing at {@code crossing}: 1 left, -1 right, 0 none (at the body, or out of reach). */
+inline int DiveSide(float crossing, float reach = 0.7f) {
+	if (std::fabs(crossing) <= 0.15f || std::fabs(crossing) >= reach + 0.4f) return 0;
+	return crossing > 0 ? 1 : -1;
+}
+
+inline bool IsGoalkeeper(const World& world) { return world.game && world.game->player_number() == 1; }
 
 /** Keep the ball in the middle of the image when it is seen. */
 inline void TrackBall(kse::messaging::Blackboard& blackboard, const World& world) {

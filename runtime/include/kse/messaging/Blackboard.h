@@ -27,9 +27,15 @@ struct Stamped {
   std::shared_ptr<const T> message;
 };
 
-/// The messages one scope sees (the statechart root and every AND region own one).
-/// Messages are keyed by topic and protobuf full type name; each blackboard keeps its own
-/// signal queues, so two blackboards each see a signal once. Thread-safe.
+/// The messages one scope sees (the statechart root and every AND region own one), as Monas'
+/// Narukom blackboards did: a snapshot. A message published by others waits in the
+/// blackboard's inbox and becomes visible to its readers only when ProcessMessages() runs on
+/// it; a message published through this blackboard is visible here at once. Messages are keyed
+/// by topic and protobuf full type name; each blackboard keeps its own signal queues, so two
+/// blackboards each see a signal once. Thread-safe.
+///
+/// A blackboard also keeps the wake-up times its TimeoutActions asked for, so the engine that
+/// owns it knows when to re-evaluate (see statechart_engine::SetTimeout).
 class Blackboard {
  public:
   using MessagePtr = std::shared_ptr<const google::protobuf::Message>;
@@ -45,9 +51,17 @@ class Blackboard {
   Blackboard& operator=(const Blackboard&) = delete;
 
   /// Receive the messages published on a topic from now on (plus the topic's current State
-  /// messages). Idempotent.
+  /// messages), into the inbox. Idempotent.
   void Subscribe(const std::string& topic);
   bool IsSubscribed(const std::string& topic) const;
+
+  /// Makes what arrived since the last call visible to the readers: State messages replace
+  /// the previous ones, Signals join their queues, Data entries their histories. The
+  /// `process_messages` action of a transition and every `TimeoutCheck` guard call it; an
+  /// activity calls it at the start of Execute() to see the latest messages.
+  void ProcessMessages();
+  /// Messages waiting in the inbox.
+  std::size_t PendingMessages() const;
 
   /// The last State message of that topic and type, or nullptr.
   template <class T>
@@ -79,19 +93,21 @@ class Blackboard {
     return out;
   }
 
-  /// Publishes a copy of the message through the hub (so this blackboard receives it too when
-  /// it is subscribed to the topic).
+  /// Publishes a copy of the message: visible on this blackboard at once, delivered through
+  /// the hub to the inboxes of the other blackboards subscribed to the topic.
   template <class T>
   void Publish(const std::string& topic, Kind kind, const T& message) {
     PublishCopy(topic, kind, message);
   }
 
-  /// (Re)starts the timer of a topic: it expires `after` from now.
-  void SetTimeout(const std::string& topic, std::chrono::milliseconds after);
-  /// True when no timer on that topic is pending (never set, or its deadline has passed).
-  bool TimeoutExpired(const std::string& topic) const;
-  /// The earliest deadline of the pending timers, if any.
-  std::optional<TimePoint> NextDeadline() const;
+  /// Asks the owning engine to re-evaluate at that time (each call is one wake-up: a timer
+  /// restarted before it expired still wakes the engine at its first time too, as Monas'
+  /// timeout workers did).
+  void ScheduleWakeup(TimePoint time);
+  /// The earliest wake-up not yet taken, if any.
+  std::optional<TimePoint> NextWakeup() const;
+  /// Removes the wake-ups due at `now`; true when there was one.
+  bool TakeDueWakeups(TimePoint now);
 
   // -- untyped access (what the templates use) --------------------------------------------
   MessagePtr ReadStateMessage(const std::string& topic, const std::string& type_name) const;
@@ -123,6 +139,9 @@ class Blackboard {
     MessagePtr message;
     TimePoint time;
   };
+  // Callers hold mutex_.
+  void Apply(std::string key, Kind kind, const MessagePtr& message, TimePoint time);
+  void Queue(std::string key, Kind kind, const MessagePtr& message, TimePoint time);
 
   MessageHub& hub_;
   const std::string name_;
@@ -132,7 +151,13 @@ class Blackboard {
   std::map<std::string, Entry> states_;
   std::map<std::string, std::deque<MessagePtr>> signals_;
   std::map<std::string, std::deque<Entry>> data_;
-  std::map<std::string, TimePoint> timers_;
+  // The inbox: what arrived since the last ProcessMessages(), bounded as the visible part is
+  // (a State message replaces the one waiting before it).
+  std::map<std::string, Entry> inbox_states_;
+  std::map<std::string, std::deque<MessagePtr>> inbox_signals_;
+  std::map<std::string, std::deque<Entry>> inbox_data_;
+  std::size_t inbox_size_ = 0;
+  std::multiset<TimePoint> wakeups_;
 };
 
 }  // namespace kse::messaging

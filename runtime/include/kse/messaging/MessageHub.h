@@ -23,8 +23,9 @@ class Blackboard;
 /// Publish/subscribe on named topics (Narukom's role in Monas). Thread-safe: any thread may
 /// publish while engines read their blackboards.
 ///
-/// A published message is delivered, stamped with the hub's clock, to every blackboard
-/// subscribed to its topic. The hub also keeps the last State message per topic and type, so a
+/// A published message is delivered, stamped with the hub's clock, to the inbox of every
+/// blackboard subscribed to its topic (it becomes visible there at the blackboard's next
+/// ProcessMessages()). The hub also keeps the last State message per topic and type, so a
 /// blackboard that subscribes late still starts with the current state.
 /// Blackboards must not outlive their hub.
 class MessageHub {
@@ -37,10 +38,11 @@ class MessageHub {
   MessageHub(const MessageHub&) = delete;
   MessageHub& operator=(const MessageHub&) = delete;
 
-  /// Delivers a message to the subscribers of a topic, then calls every listener.
-  /// A null message is ignored.
+  /// Delivers a message to the subscribers of a topic (but `origin`, the blackboard that
+  /// published it and already shows it), then calls every listener. A null message is ignored.
   void Publish(const std::string& topic, Kind kind,
-               std::shared_ptr<const google::protobuf::Message> message);
+               std::shared_ptr<const google::protobuf::Message> message,
+               const Blackboard* origin = nullptr);
 
   /// Registers a function called (on the publishing thread) after every publish. Listeners must
   /// be quick and must not add or remove listeners. Returns an id for RemoveListener.
@@ -60,6 +62,7 @@ class MessageHub {
   struct Retained {
     std::shared_ptr<const google::protobuf::Message> message;
     TimePoint time;
+    const Blackboard* origin;  // never handed back to the blackboard that published it
   };
 
   void Attach(Blackboard* board, const std::string& topic);
