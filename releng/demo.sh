@@ -2,12 +2,12 @@
 # `kse demo`: the whole pipeline on a fresh machine. Validates the example models, generates
 # their Monas C++, builds the runtime and the examples with CMake, and plays a short 3-against-3
 # match on the simulated field; prints the result and where the log and the picture are.
-# Options: --seed N (default 1), --half SECONDS (default 120), --out DIR (default target/demo).
+# Options: --seed N (default 1), --half SECONDS (default 600, a full SPL half: about a second on the simulator), --out DIR (default target/demo).
 # KSE_RUNTIME_PREFIX=DIR reuses an installed runtime instead of building one.
 set -euo pipefail
 here="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
 seed=1
-half=120
+half=600
 out="$here/target/demo"
 while [ $# -gt 0 ]; do
   case "$1" in

@@ -35,11 +35,17 @@ int ApproachBall::Execute() {
 	const float ex = ball.relativex() - kKickX;
 	const float ey = ball.relativey() - side * kKickY;
 	const float bearing = world.BallBearing();
-	// far: walk at the ball turning towards it; near: line up on the kicking spot and the goal
+	// far, or not in front: turn to the ball (backing off when it is beside or behind, so that
+	// turning does not sweep it away); near and in front: line up on the kicking spot and the goal
 	const float goal = world.BearingTo(examples::kOpponentGoalX, 0.0f);
-	const bool near = world.BallDistance() < 0.5f;
+	const bool inFront = std::fabs(bearing) < 0.6f;
+	const bool near = world.BallDistance() < 0.5f && inFront;
 	const float turn = near && world.Localised() ? 0.8f * goal : 1.2f * bearing;
-	examples::Walk(*_blk, 2.5f * ex, 3.0f * ey, turn);
+	if (std::fabs(bearing) > 1.2f) {
+		examples::Walk(*_blk, -0.4f, 0.0f, turn);
+	} else {
+		examples::Walk(*_blk, 2.5f * ex, 3.0f * ey, turn);
+	}
 	examples::TrackBall(*_blk, world);
 	return 0;
 }

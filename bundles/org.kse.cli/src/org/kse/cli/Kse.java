@@ -84,12 +84,13 @@ public final class Kse {
 			changes nothing. Writes the model in place unless -o is given.""";
 
 	private static final String GENERATE_HELP = """
-			usage: kse generate <model.stct> <source-folder> [--logger] [--messages DIR]... [--quiet]
+			usage: kse generate <model.stct>... <source-folder> [--logger] [--messages DIR]... [--quiet]
 
-			Writes the Monas C++ of a valid model into a source folder: statecharts/<Model>/
+			Writes the Monas C++ of each valid model into a source folder: statecharts/<Model>/
 			(the statechart class, one class per guard and per action list, CMakeLists.txt) and
 			activities/<Activity>/ skeletons. Activities that exist are never overwritten; files
-			whose content would not change are not touched. A model with errors is refused.
+			whose content would not change are not touched. A model with errors is refused (the
+			other models are still generated, and the exit code is 1).
 			Messages are checked against the standard set, <source-folder>/messages/*.proto
 			(compiled by the generated CMake) and each --messages folder. A message the source
 			folder defines again replaces the standard one in the checks (a note says which);
@@ -272,12 +273,19 @@ public final class Kse {
 			out.println(GENERATE_HELP);
 			return OK;
 		}
-		if (options.positional.size() != 2) {
-			throw new UsageException("expected a model file and a source folder");
+		if (options.positional.size() < 2) {
+			throw new UsageException("expected one or more model files and a source folder");
 		}
 		quiet = options.flag("-q", "--quiet");
-		Path file = Path.of(options.positional.get(0));
-		Path folder = Path.of(options.positional.get(1));
+		Path folder = Path.of(options.positional.get(options.positional.size() - 1));
+		int result = OK;
+		for (String model : options.positional.subList(0, options.positional.size() - 1)) {
+			result = Math.max(result, generate(Path.of(model), folder, options));
+		}
+		return result;
+	}
+
+	private int generate(Path file, Path folder, Options options) throws IOException {
 		Model model = StatechartResources.load(file);
 		try {
 			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages")),

@@ -12,6 +12,7 @@ void Search::UserInit() {
 }
 
 int Search::Execute() {
+	_blk->ProcessMessages();  // see what was published since the last refresh
 	[[maybe_unused]] const auto ball = _blk->ReadState<HeadToBMessage>("behavior");
 	[[maybe_unused]] const auto world = _blk->ReadData<WorldInfo>("worldstate");
 	// TODO: the behaviour of Search

@@ -10,6 +10,7 @@ void Track::UserInit() {
 }
 
 int Track::Execute() {
+	_blk->ProcessMessages();  // see what was published since the last refresh
 	// TODO: the behaviour of Track
 	return 0;
 }

@@ -10,6 +10,7 @@ void Walk::UserInit() {
 }
 
 int Walk::Execute() {
+	_blk->ProcessMessages();  // see what was published since the last refresh
 	// TODO: the behaviour of Walk
 	return 0;
 }

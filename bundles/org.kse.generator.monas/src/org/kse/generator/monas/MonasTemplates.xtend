@@ -307,6 +307,7 @@ class MonasTemplates {
 		}
 
 		int «activity»::Execute() {
+			_blk->ProcessMessages();  // see what was published since the last refresh
 			«FOR input : inputs»
 				«val parts = input.type.split('\\.')»
 				[[maybe_unused]] const auto «CppNames.identifier(input.name)» = _blk->Read«parts.get(1)»<«CppNames.identifier(parts.get(2))»>(«CppNames.string(parts.get(0))»);

@@ -379,6 +379,18 @@ class CommandLineTest {
 		assertTrue(refused.err().contains(": error: the root state must be an OR state"), refused::all);
 		assertTrue(refused.err().contains("nothing generated"), refused::all);
 		assertFalse(Files.exists(directory.resolve("other")));
+
+		// Several models into one folder in one call: the valid ones are generated, the broken
+		// one is refused, and the exit code says so.
+		Path several = directory.resolve("several");
+		Run both = kse("generate", "-q", legacy.resolve("GUITester/GUITester.stct").toString(), brokenFile.toString(),
+				legacy.resolve("TestBehavior/TestBehavior.stct").toString(), several.toString());
+		assertEquals(1, both.code(), both::all);
+		assertTrue(both.out().contains("generated GUITester into"), both::all);
+		assertTrue(both.out().contains("generated TestBehavior into"), both::all);
+		assertTrue(both.err().contains("Broken.stct: ") && both.err().contains("nothing generated"), both::all);
+		assertTrue(Files.isDirectory(several.resolve("statecharts/GUITester")));
+		assertTrue(Files.isDirectory(several.resolve("statecharts/TestBehavior")));
 	}
 
 	// ------------------------------------------------------------------ a Monas tree and events
