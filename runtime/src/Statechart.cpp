@@ -339,7 +339,8 @@ bool EngineCore::Step() {
 }
 
 bool EngineCore::StepRoot() {
-  step_number_.fetch_add(1, std::memory_order_relaxed);
+  // Written only under engine_mutex_: a plain increment, no locked read-modify-write.
+  step_number_.store(step_number_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
   return StepState(&chart_);
 }
 
@@ -456,7 +457,8 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
     }
   }
   EnterAlong(transition->entry_path_, 0);
-  transitions_taken_.fetch_add(1, std::memory_order_relaxed);
+  transitions_taken_.store(transitions_taken_.load(std::memory_order_relaxed) + 1,
+                          std::memory_order_relaxed);
   if (observer_) {
     try {
       observer_(*transition);

@@ -1,4 +1,4 @@
-// Guard helpers of reference §9 at their tolerance edges, and the PLAYER_* constants.
+// Guard helpers of docs/original-kse.md §9 at their tolerance edges, and the PLAYER_* constants.
 
 #include <gtest/gtest.h>
 

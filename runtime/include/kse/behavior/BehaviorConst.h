@@ -7,7 +7,7 @@
 
 namespace kse::behavior {
 
-// GameStateMessage::player_state() values (reference §9).
+// GameStateMessage::player_state() values (docs/original-kse.md §9).
 constexpr int PLAYER_INITIAL = 0;
 constexpr int PLAYER_READY = 1;
 constexpr int PLAYER_SET = 2;

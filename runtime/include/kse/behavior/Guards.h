@@ -1,7 +1,7 @@
 #ifndef KSE_BEHAVIOR_GUARDS_H
 #define KSE_BEHAVIOR_GUARDS_H
 
-// Guard helpers that generated conditions call unqualified (reference §9), e.g.
+// Guard helpers that generated conditions call unqualified (docs/original-kse.md §9), e.g.
 // `[... && readyToKick(worldstate.Data.WorldInfo)]`. Global functions.
 //
 // All bounds are inclusive, with kse::behavior::kGuardSlack (1e-6 m or rad) of slack so that

@@ -3,7 +3,7 @@
 
 namespace kse::messaging {
 
-/// How a blackboard keeps a published message (reference §8):
+/// How a blackboard keeps a published message (docs/semantics.md):
 /// - State: the last value per topic and type;
 /// - Signal: a queue per topic and type, each entry consumed by the read that returns it;
 /// - Data: a time-stamped history per topic and type (bounded).

@@ -1,5 +1,5 @@
 #pragma once
-// The RoboCup SPL field and the Nao's numbers (reference §10). Field frame: origin at the
+// The RoboCup SPL field and the Nao's numbers (docs/original-kse.md §10). Field frame: origin at the
 // centre mark, x along the long side, goals at x = ±kHalfLength.
 
 #include <kse/sim/Geometry.h>

@@ -1,5 +1,5 @@
 #pragma once
-// The RoboCup SPL GameController protocol, version 18 (reference §10): the 118-byte
+// The RoboCup SPL GameController protocol, version 18 (docs/original-kse.md §10): the 118-byte
 // RoboCupGameControlData packets the GameController sends to UDP 3838 and the 32-byte status
 // robots return to 3939. Encoded and decoded field by field, little-endian, whatever the host.
 

@@ -16,7 +16,7 @@ import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 
 /**
- * "Labeling Diagram" of the original tool, made total and idempotent (reference §4).
+ * "Labeling Diagram" of the original tool, made total and idempotent (docs/original-kse.md §4).
  * <p>
  * The root is {@code 0}. Inside a composite, START is {@code .1}; the other children
  * follow in the order a breadth-first walk along the transitions from START reaches

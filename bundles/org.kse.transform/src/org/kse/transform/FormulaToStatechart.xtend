@@ -18,7 +18,7 @@ import org.kse.model.statechart.Node
 import org.kse.model.statechart.StatechartFactory
 
 /**
- * Liveness formulas to statechart, by the rules of the original KSE (reference §3):
+ * Liveness formulas to statechart, by the rules of the original KSE (docs/original-kse.md §3):
  * the same labels, node kinds, names, transitions and even the same order of
  * elements in the saved file. Where the original crashed (a lone name on the right
  * side), the expression becomes a sequence of one term. A name defined twice means its

@@ -23,7 +23,7 @@ import org.kse.model.statechart.Transition;
 import org.kse.model.statechart.Variable;
 
 /**
- * The statechart rules of the original tool (reference §5) as an EMF validator, so
+ * The statechart rules of the original tool (docs/original-kse.md §5) as an EMF validator, so
  * that the headless tools and the editors report the same diagnostics. Each
  * diagnostic's data holds the offending element first; a transition-expression
  * problem also holds its {@link Issue}, whose offset counts inside the expression.

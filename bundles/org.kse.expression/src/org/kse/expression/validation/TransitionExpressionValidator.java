@@ -17,7 +17,7 @@ import org.kse.expression.transitionExpression.TransitionExpression;
 import org.kse.expression.transitionExpression.TransitionExpressionPackage.Literals;
 
 /**
- * Rules of §6 that the grammar alone cannot state. Each one is reported at the
+ * Rules of docs/original-kse.md §6 that the grammar alone cannot state. Each one is reported at the
  * position of the offending word inside the expression.
  */
 public class TransitionExpressionValidator extends AbstractTransitionExpressionValidator {

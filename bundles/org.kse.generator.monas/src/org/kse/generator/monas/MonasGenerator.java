@@ -24,7 +24,7 @@ import org.kse.model.statechart.Node;
 import org.kse.validation.ModelValidation;
 
 /**
- * Writes the Monas C++ of a statechart into a source folder (reference §7):
+ * Writes the Monas C++ of a statechart into a source folder (docs/original-kse.md §7):
  * {@code statecharts/<Model>/} is owned by the generator and rewritten as needed;
  * {@code activities/<Activity>/} is the user's: created once, never overwritten.
  * A file whose content would not change is not touched, so builds stay incremental.

@@ -11,7 +11,7 @@ import org.kse.model.statechart.Node
 import org.kse.model.statechart.Variable
 
 /**
- * The Monas C++ layout of reference §7, written as Xtend templates. Pure functions of
+ * The Monas C++ layout of docs/original-kse.md §7, written as Xtend templates. Pure functions of
  * the plan: the same model always gives the same text.
  */
 class MonasTemplates {

@@ -37,7 +37,7 @@ import org.kse.expression.transitionExpression.TimeoutAction;
 import org.kse.expression.transitionExpression.TransitionExpression;
 import org.kse.expression.validation.TransitionExpressionValidator;
 
-/** Transition expressions {@code event[condition]/actions} (reference §6). */
+/** Transition expressions {@code event[condition]/actions} (docs/original-kse.md §6). */
 class ExpressionGrammarTest {
 
 	private static TransitionExpression parseClean(String text) {

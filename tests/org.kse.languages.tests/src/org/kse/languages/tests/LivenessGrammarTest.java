@@ -40,7 +40,7 @@ import org.kse.liveness.liveness.RepetitionKind;
 import org.kse.liveness.liveness.Replication;
 import org.kse.liveness.validation.LivenessValidator;
 
-/** The liveness formula language (reference §2): what parses, and where every error is reported. */
+/** The liveness formula language (docs/original-kse.md §2): what parses, and where every error is reported. */
 class LivenessGrammarTest {
 
 	/** The original Goalie.txt, byte for byte: the model name alone on line 1. */

@@ -36,7 +36,7 @@ import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 
-/** "Labeling Diagram" (reference §4): total, idempotent, in execution order. */
+/** "Labeling Diagram" (docs/original-kse.md §4): total, idempotent, in execution order. */
 class LabelingTest {
 
 	/** The models labeled here: the legacy files and models made in code. */
@@ -349,7 +349,7 @@ class LabelingTest {
 
 	// ------------------------------------------------------------------ invariants
 
-	/** What every labeled model satisfies (reference §4). */
+	/** What every labeled model satisfies (docs/original-kse.md §4). */
 	static void assertWellLabeled(Model model) {
 		List<Node> nodes = Models.allNodes(model);
 		Map<String, Node> byLabel = new HashMap<>();

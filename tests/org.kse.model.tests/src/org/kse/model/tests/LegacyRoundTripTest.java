@@ -33,7 +33,7 @@ import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 
-/** The original tool's files load, save and load again without losing anything (reference §1). */
+/** The original tool's files load, save and load again without losing anything (docs/original-kse.md §1). */
 class LegacyRoundTripTest {
 
 	static List<Path> legacyModels() {

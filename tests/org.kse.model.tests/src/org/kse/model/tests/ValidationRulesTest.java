@@ -33,7 +33,7 @@ import org.kse.validation.ModelValidation;
 import org.kse.validation.StatechartValidator;
 
 /**
- * Every rule of {@link StatechartValidator} (reference §5 and the rules that make the
+ * Every rule of {@link StatechartValidator} (docs/original-kse.md §5 and the rules that make the
  * tool total): a small model breaking it yields exactly that diagnostic, with the right
  * severity, on the right element, worded {@code label (name): message}; the same model
  * put right yields nothing.

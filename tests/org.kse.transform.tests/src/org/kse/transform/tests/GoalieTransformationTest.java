@@ -19,7 +19,7 @@ import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 
-/** The worked example of reference §3 and the original tool's own saved models. */
+/** The worked example of docs/original-kse.md §3 and the original tool's own saved models. */
 class GoalieTransformationTest {
 
 	private static final Path LEGACY = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");

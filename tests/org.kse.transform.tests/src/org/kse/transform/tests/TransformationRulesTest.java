@@ -16,7 +16,7 @@ import org.kse.model.statechart.Model;
 
 /**
  * Every operator alone and nested, with the expected statechart written by hand from
- * the rules of reference §3. Expected: the states in document order ("label TYPE name",
+ * the rules of docs/original-kse.md §3. Expected: the states in document order ("label TYPE name",
  * the name left out when it equals the label), then a line "=>" followed by the
  * transitions by label.
  */
