@@ -383,13 +383,13 @@ class CommandLineTest {
 		// Several models into one folder in one call: the valid ones are generated, the broken
 		// one is refused, and the exit code says so.
 		Path several = directory.resolve("several");
-		Run both = kse("generate", "-q", legacy.resolve("GUITester/GUITester.stct").toString(), brokenFile.toString(),
+		Run both = kse("generate", "-q", legacy.resolve("Goalie/Goalie.stct").toString(), brokenFile.toString(),
 				legacy.resolve("TestBehavior/TestBehavior.stct").toString(), several.toString());
 		assertEquals(1, both.code(), both::all);
-		assertTrue(both.out().contains("generated GUITester into"), both::all);
+		assertTrue(both.out().contains("generated Goalie into"), both::all);
 		assertTrue(both.out().contains("generated TestBehavior into"), both::all);
 		assertTrue(both.err().contains("Broken.stct: ") && both.err().contains("nothing generated"), both::all);
-		assertTrue(Files.isDirectory(several.resolve("statecharts/GUITester")));
+		assertTrue(Files.isDirectory(several.resolve("statecharts/Goalie")));
 		assertTrue(Files.isDirectory(several.resolve("statecharts/TestBehavior")));
 	}
 
