@@ -66,6 +66,7 @@ tests/conformance/run.sh "$out/runtime-prefix" "$out/conformance"
 echo "== Integration: generated code built against the installed runtime and driven"
 tests/integration/run.sh goalie tests/data/legacy-kse/Goalie/Goalie.stct "$out/runtime-prefix" "$out/goalie"
 tests/integration/run.sh allkinds tests/org.kse.generator.monas.tests/models/AllKinds.stct "$out/runtime-prefix" "$out/allkinds"
+tests/integration/run.sh hostile tests/data/hostile/Hostile.stct "$out/runtime-prefix" "$out/hostile"
 
 echo "== Examples: Goalie, Attacker, Defender (generated from their models by the Maven build), built with their activities,"
 echo "   driven by scripted worlds and played on the simulated field over 20 seeds"

@@ -2,6 +2,7 @@ package org.kse.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.nio.charset.MalformedInputException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -153,7 +154,29 @@ public final class Kse {
 		} catch (IOException e) {
 			err.println("kse: " + e.getMessage());
 			return FAILED;
+		} catch (UncheckedIOException e) {
+			err.println("kse: " + e.getCause().getMessage());
+			return FAILED;
+		} catch (OutOfMemoryError e) {
+			return internalError(args[0], "out of memory: the input is too large for it");
+		} catch (StackOverflowError e) {
+			return internalError(args[0], "the input is nested too deeply for it");
+		} catch (RuntimeException | LinkageError e) {
+			return internalError(args[0], e.getMessage() == null ? "an internal error" : "an internal error: " + e.getMessage(), e);
 		}
+	}
+
+	/**
+	 * Nothing may end a command silently (an uncaught error used to leave with exit code 0 and
+	 * its trace in the product's log only): say what happened, exit with 2, and show the trace
+	 * only when KSE_DEBUG is set.
+	 */
+	private int internalError(String command, String what, Throwable... cause) {
+		err.println("kse: " + command + " stopped: " + what + (System.getenv("KSE_DEBUG") == null ? " (set KSE_DEBUG=1 for details)" : ""));
+		if (System.getenv("KSE_DEBUG") != null && cause.length > 0) {
+			cause[0].printStackTrace(err);
+		}
+		return FAILED;
 	}
 
 	private int help(List<String> args) {

@@ -3,6 +3,7 @@ package org.kse.messages;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
+import java.nio.charset.MalformedInputException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -101,6 +102,14 @@ public final class StandardMessages {
 	 * {@link #merge(List)} without some of the folders' files (absolute, normalized paths): what
 	 * a build that leaves those files out has.
 	 */
+	private static String readText(Path file) throws IOException {
+		try {
+			return Files.readString(file, StandardCharsets.UTF_8);
+		} catch (MalformedInputException e) {
+			throw new IOException(file + ": not a text file (it is not UTF-8)", e);
+		}
+	}
+
 	public static Merged merge(List<Path> folders, Set<Path> leftOut) {
 		List<ProtoFile> user = new ArrayList<>();
 		Map<String, Path> defined = new HashMap<>();
@@ -113,7 +122,7 @@ public final class StandardMessages {
 					if (leftOut.contains(file.toAbsolutePath().normalize())) {
 						continue;
 					}
-					ProtoFile parsed = ProtoParser.parse(folder.relativize(file), Files.readString(file, StandardCharsets.UTF_8));
+					ProtoFile parsed = ProtoParser.parse(folder.relativize(file), readText(file));
 					user.add(parsed);
 					parsed.messages().forEach(type -> defined.putIfAbsent(type.fullName(), file));
 					parsed.enums().forEach(type -> defined.putIfAbsent(type.fullName(), file));

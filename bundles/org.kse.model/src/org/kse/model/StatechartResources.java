@@ -15,6 +15,8 @@ import java.util.UUID;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.resource.ResourceSet;
+import org.eclipse.emf.ecore.resource.impl.FileURIHandlerImpl;
+import org.eclipse.emf.ecore.resource.impl.PlatformResourceURIHandlerImpl;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.xmi.XMLResource;
 import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
@@ -33,9 +35,22 @@ public final class StatechartResources {
 	private StatechartResources() {
 	}
 
-	/** A resource set that knows the statechart package and the .stct extension. */
+	/**
+	 * A resource set that knows the statechart package and the .stct extension, and that never
+	 * loads anything it was not asked to: a model is one file, and a model from someone else must
+	 * not make KSE open other files or reach the network. A reference into another document (an
+	 * href, a proxy) and an unknown nsURI stay unresolved, which validation reports; only file
+	 * and platform URIs can be read at all.
+	 */
 	public static ResourceSet newResourceSet() {
-		ResourceSet resourceSet = new ResourceSetImpl();
+		ResourceSet resourceSet = new ResourceSetImpl() {
+			@Override
+			public Resource getResource(URI uri, boolean loadOnDemand) {
+				return super.getResource(uri, false);
+			}
+		};
+		resourceSet.getURIConverter().getURIHandlers()
+				.removeIf(handler -> !(handler instanceof FileURIHandlerImpl || handler instanceof PlatformResourceURIHandlerImpl));
 		resourceSet.getPackageRegistry().put(StatechartPackage.eNS_URI, StatechartPackage.eINSTANCE);
 		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put(FILE_EXTENSION, new XMIResourceFactoryImpl());
 		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put("*", new XMIResourceFactoryImpl());

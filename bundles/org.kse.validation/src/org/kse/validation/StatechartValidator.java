@@ -12,6 +12,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EDataType;
 import org.eclipse.emf.ecore.EValidator;
+import org.eclipse.emf.ecore.InternalEObject;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.StandardMessages;
@@ -95,6 +96,12 @@ public class StatechartValidator implements EValidator {
 			return;
 		}
 		checkUniqueLabel(node, diagnostics, context);
+		for (Variable variable : node.getVariables()) {
+			if (variable.eIsProxy()) {
+				error(diagnostics, DANGLING, node, "a variable of the state is in another document (" + ((InternalEObject) variable).eProxyURI()
+						+ "), which KSE does not open: a model is one file");
+			}
+		}
 		switch (kind) {
 			case AND -> {
 				for (Node child : node.getChildren()) {
@@ -138,6 +145,10 @@ public class StatechartValidator implements EValidator {
 		Node target = transition.getTarget();
 		if (source == null || target == null) {
 			error(diagnostics, DANGLING, transition, "the transition has no " + (source == null ? "source" : "target") + " state");
+		} else if (source.eIsProxy() || target.eIsProxy()) {
+			Node outside = source.eIsProxy() ? source : target;
+			error(diagnostics, DANGLING, transition, "the transition's " + (outside == source ? "source" : "target") + " is in another document ("
+					+ ((InternalEObject) outside).eProxyURI() + "), which KSE does not open: a model is one file");
 		} else {
 			if (NodeKind.START.is(target)) {
 				error(diagnostics, START_TARGET, transition, "a START state cannot be the target of a transition");

@@ -42,9 +42,20 @@ public final class CppNames {
 		return KEYWORDS.contains(result) ? result + "_" : result;
 	}
 
-	/** A label such as 0.3.2 as it appears inside identifiers: 0_3_2. */
+	/**
+	 * A label such as 0.3.2 as it appears inside identifiers and file names: 0_3_2. Every
+	 * character that cannot be part of an identifier becomes '_', so a label is never code.
+	 */
 	public static String label(String label) {
-		return label == null ? "unlabeled" : label.replace('.', '_');
+		if (label == null || label.isEmpty()) {
+			return "unlabeled";
+		}
+		StringBuilder out = new StringBuilder(label.length());
+		for (int i = 0; i < label.length(); i++) {
+			char c = label.charAt(i);
+			out.append(c < 128 && (Character.isLetterOrDigit(c) || c == '_') ? c : '_');
+		}
+		return out.toString();
 	}
 
 	/** A C++ string literal with the text escaped. */
@@ -63,8 +74,11 @@ public final class CppNames {
 		return out.append('"').toString();
 	}
 
-	/** Text safe inside a C++ block comment. */
+	/**
+	 * Text safe inside a C++ comment, block or line: no end of a block comment, no line break,
+	 * and no backslash (one at the end of a line comment would continue it onto the next line).
+	 */
 	public static String comment(String text) {
-		return text == null ? "" : text.replace("*/", "* /").replace("\r", "").replace("\n", " ");
+		return text == null ? "" : text.replace("*/", "* /").replace('\\', '/').replace("\r", "").replace("\n", " ");
 	}
 }

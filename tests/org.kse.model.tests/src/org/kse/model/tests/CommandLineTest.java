@@ -3,6 +3,7 @@ package org.kse.model.tests;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.kse.model.tests.Models.child;
 import static org.kse.model.tests.Models.root;
@@ -11,10 +12,14 @@ import static org.kse.model.tests.Models.transition;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
@@ -427,6 +432,78 @@ class CommandLineTest {
 		assertTrue(Files.isRegularFile(source.resolve("statecharts/Localizer/Localizer.cpp")));
 		assertTrue(Files.readString(source.resolve("activities/Localize/Localize.cpp")).contains("done.set_moveon(1);"), "the tree's own activity is kept");
 		assertTrue(Files.isRegularFile(source.resolve("activities/Approach/Approach.cpp")), "a skeleton for the missing one");
+	}
+
+	/**
+	 * Issue 13, item 2: a model from someone else must not make KSE reach the network. An external
+	 * XML entity, a reference into another document, a state variable there and an unknown nsURI
+	 * all point at a server
+	 * that accepts connections and never answers (validate used to hang on it): each command
+	 * ends at once, says what is wrong, and the server sees no connection.
+	 */
+	@Test
+	void theCommandLineNeverReachesTheNetwork() throws Exception {
+		try (ServerSocket server = new ServerSocket(0, 50, InetAddress.getLoopbackAddress())) {
+			AtomicInteger connections = new AtomicInteger();
+			Thread listener = new Thread(() -> {
+				while (!server.isClosed()) {
+					try {
+						server.accept();
+						connections.incrementAndGet();
+					} catch (IOException closed) {
+						return;
+					}
+				}
+			});
+			listener.setDaemon(true);
+			listener.start();
+			String remote = "http://127.0.0.1:" + server.getLocalPort();
+			String goalie = Files.readString(Models.LEGACY.resolve("Goalie/Goalie.stct"));
+			String allKinds = Files.readString(Path.of(System.getProperty("kse.repository", "../.."), "tests/org.kse.generator.monas.tests/models/AllKinds.stct"));
+			Path crossDocument = directory.resolve("CrossDocument.stct");
+			Files.writeString(crossDocument, goalie.replaceFirst("target=\"//@nodes.0/@Children.2\"", "target=\"" + remote + "/other.stct#//@nodes.0\""));
+			Path remoteVariable = directory.resolve("RemoteVariable.stct");
+			Files.writeString(remoteVariable, allKinds.replace("variables=\"//@variables.0 //@variables.1\"", "variables=\"" + remoteVariable.getFileName() + "#//@variables.0 " + remote + "/vars.stct#//@variables.0\""));
+			Path unknownPackage = directory.resolve("UnknownPackage.stct");
+			Files.writeString(unknownPackage, goalie.replace("xmlns:statechart=\"http://statechart/1.0\"", "xmlns:statechart=\"" + remote + "/statechart\""));
+
+			Path externalEntity = directory.resolve("ExternalEntity.stct");
+			Files.writeString(externalEntity, allKinds.replace("<?xml version=\"1.0\" encoding=\"ASCII\"?>",
+					"<?xml version=\"1.0\" encoding=\"ASCII\"?>\n<!DOCTYPE m [ <!ENTITY x SYSTEM \"" + remote + "/entity\"> ]>")
+					.replaceFirst("  <variables ", "  <variables>&x;</variables>\n  <variables "));
+
+			Run entity = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", externalEntity.toString()));
+			assertTrue(entity.code() == Kse.INVALID || entity.code() == Kse.FAILED, entity::all);
+			Run cross = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", crossDocument.toString()));
+			assertEquals(Kse.INVALID, cross.code(), cross::all);
+			assertTrue(cross.out().contains("error: the transition's target is in another document (" + remote + "/other.stct#//@nodes.0), which KSE does not open"), cross::all);
+			Run variable = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", remoteVariable.toString()));
+			assertEquals(Kse.INVALID, variable.code(), variable::all);
+			assertTrue(variable.out().contains("error: a variable of the state is in another document (" + remote + "/vars.stct#//@variables.0)"), variable::all);
+			Run generate = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("generate", "-q", crossDocument.toString(), directory.resolve("src").toString()));
+			assertEquals(Kse.INVALID, generate.code(), generate::all);
+			assertFalse(Files.exists(directory.resolve("src")), "nothing generated from a model with a reference into another document");
+			Run unknown = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", unknownPackage.toString()));
+			assertEquals(Kse.FAILED, unknown.code(), unknown::all);
+			assertTrue(unknown.err().contains(unknownPackage + ": not a statechart model"), unknown::all);
+			assertEquals(0, connections.get(), "a command opened a connection");
+		}
+	}
+
+	/** Issue 13, item 3: a .proto that is not UTF-8 in the source tree used to end the command with exit 0 and no word. */
+	@Test
+	void aSourceTreeFileThatIsNotTextIsNamedAndTheCommandFails() throws IOException {
+		Path tree = monasTree();
+		Path model = tree.resolve("models/Localizer.stct");
+		Path source = tree.resolve("src");
+		Path binary = source.resolve("messages/Binary.proto");
+		Files.write(binary, new byte[] { 'm', 'e', 's', (byte) 0xC3, (byte) 0x28, (byte) 0xFF, '\n' });
+		for (String command : List.of("generate", "validate")) {
+			Run run = kse(command, model.toString(), source.toString());
+			assertEquals(Kse.FAILED, run.code(), run::all);
+			assertTrue(run.err().contains("kse: " + binary + ": not a text file (it is not UTF-8)"), run::all);
+			assertFalse(run.err().contains("Exception"), run::all);
+		}
 	}
 
 	@Test

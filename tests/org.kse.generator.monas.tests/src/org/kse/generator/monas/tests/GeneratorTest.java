@@ -225,6 +225,58 @@ class GeneratorTest {
 		assertFalse(report.written().isEmpty());
 	}
 
+	/**
+	 * Issue 13, items 1 and 5: tests/data/hostile/Hostile.stct validates, but its labels carry C++
+	 * (a string's end and a call to system, a block comment's end and a declaration) and its
+	 * names end in a backslash, which would make a line comment swallow the next line. No model
+	 * text may become code (tests/integration/hostile compiles and runs the result).
+	 */
+	@Test
+	void labelsAndNamesNeverBecomeCode(@TempDir Path folder) throws Exception {
+		Model hostile = StatechartResources.load(Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "hostile", "Hostile.stct"));
+		MonasGenerator.generate(hostile, folder, Options.DEFAULT);
+		for (Map.Entry<Path, String> file : tree(folder).entrySet()) {
+			String name = file.getKey().toString();
+			assertTrue(name.matches("[A-Za-z0-9_./]+"), () -> "a file name made of model text: " + name);
+			String text = file.getValue();
+			String code = withoutLiteralsAndComments(text);
+			assertFalse(code.contains("system("), () -> name + " calls what a label says:\n" + text);
+			assertFalse(code.contains("injected"), () -> name + " declares what a label says:\n" + text);
+			for (String line : text.split("\n")) {
+				assertFalse(line.contains("//") && line.endsWith("\\"), () -> name + ": a line comment continued on the next line: " + line);
+			}
+		}
+		String chart = Files.readString(folder.resolve("statecharts/Hostile/Hostile.cpp"));
+		assertTrue(chart.contains("->SetLabel(\"0.2\\\"); system(\\\"touch kse-injected\\\"); //\");"), chart);
+		assertEquals(3, withoutLiteralsAndComments(chart).split("_statechart.AddTransition\\(", -1).length - 1, chart);
+	}
+
+	/** C++ text with its string literals and comments taken out: what the compiler reads as code. */
+	private static String withoutLiteralsAndComments(String text) {
+		StringBuilder code = new StringBuilder();
+		int i = 0;
+		while (i < text.length()) {
+			if (text.startsWith("//", i)) {
+				while (i < text.length() && text.charAt(i) != '\n') {
+					i += text.charAt(i) == '\\' && i + 1 < text.length() ? 2 : 1; // a backslash joins the next line
+				}
+			} else if (text.startsWith("/*", i)) {
+				int end = text.indexOf("*/", i + 2);
+				i = end < 0 ? text.length() : end + 2;
+			} else if (text.charAt(i) == '"') {
+				i++;
+				while (i < text.length() && text.charAt(i) != '"') {
+					i += text.charAt(i) == '\\' ? 2 : 1;
+				}
+				i++;
+				code.append("\"\"");
+			} else {
+				code.append(text.charAt(i++));
+			}
+		}
+		return code.toString();
+	}
+
 	@Test
 	void keywordsBecomeValidIdentifiers(@TempDir Path folder) throws Exception {
 		Model model = allKinds();
