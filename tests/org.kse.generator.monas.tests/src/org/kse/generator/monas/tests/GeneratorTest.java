@@ -241,7 +241,7 @@ class GeneratorTest {
 			String text = file.getValue();
 			String code = withoutLiteralsAndComments(text);
 			assertFalse(code.contains("system("), () -> name + " calls what a label says:\n" + text);
-			assertFalse(code.contains("injected"), () -> name + " declares what a label says:\n" + text);
+			assertFalse(code.contains("int injected"), () -> name + " declares what a label says:\n" + text);
 			for (String line : text.split("\n")) {
 				assertFalse(line.contains("//") && line.endsWith("\\"), () -> name + ": a line comment continued on the next line: " + line);
 			}
