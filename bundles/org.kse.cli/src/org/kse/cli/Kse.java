@@ -489,6 +489,7 @@ public final class Kse {
 	}
 
 	private static String readText(Path file) throws IOException {
+		StatechartResources.checkReadable(file);
 		try {
 			return Files.readString(file, StandardCharsets.UTF_8);
 		} catch (NoSuchFileException e) {

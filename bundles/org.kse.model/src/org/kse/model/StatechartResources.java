@@ -32,6 +32,9 @@ public final class StatechartResources {
 
 	public static final String FILE_EXTENSION = "stct";
 
+	/** The deepest nesting of XML elements a model file may have: states nest twice per level. */
+	public static final int MAX_ELEMENT_DEPTH = 10_000;
+
 	private StatechartResources() {
 	}
 
@@ -67,9 +70,7 @@ public final class StatechartResources {
 	}
 
 	public static Model load(ResourceSet resourceSet, Path file) throws IOException {
-		if (!Files.isRegularFile(file)) {
-			throw new IOException(file + ": no such file");
-		}
+		checkReadable(file);
 		Resource resource = resourceSet.createResource(URI.createFileURI(file.toAbsolutePath().toString()));
 		try {
 			resource.load(loadOptions());
@@ -80,6 +81,22 @@ public final class StatechartResources {
 			throw new IOException(file + ": not a statechart model (its root element is not statechart:Model)");
 		}
 		return model;
+	}
+
+	/**
+	 * Refuses, with a message naming it, a path that is not a file one can read to its end: a
+	 * missing file, a folder, a device such as /dev/zero or a pipe.
+	 */
+	public static void checkReadable(Path file) throws IOException {
+		if (Files.isDirectory(file)) {
+			throw new IOException(file + ": is a folder, not a file");
+		}
+		if (!Files.exists(file)) {
+			throw new IOException(file + ": no such file");
+		}
+		if (!Files.isRegularFile(file)) {
+			throw new IOException(file + ": not a regular file");
+		}
 	}
 
 	/** Puts a model into a new resource for {@code file}; call {@link #save} to write it. */
@@ -152,6 +169,10 @@ public final class StatechartResources {
 	private static Map<Object, Object> loadOptions() {
 		Map<Object, Object> options = new HashMap<>();
 		options.put(XMLResource.OPTION_DEFER_IDREF_RESOLUTION, Boolean.TRUE);
+		// The JDK's parser refuses elements nested deeper than 100, but KSE writes deeper models
+		// (a formula nests its terms): every model KSE saves must load again. Set on this
+		// parser only, not for the whole JVM.
+		options.put(XMLResource.OPTION_PARSER_PROPERTIES, Map.of("jdk.xml.maxElementDepth", String.valueOf(MAX_ELEMENT_DEPTH)));
 		return options;
 	}
 

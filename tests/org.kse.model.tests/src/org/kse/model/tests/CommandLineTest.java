@@ -490,6 +490,42 @@ class CommandLineTest {
 		}
 	}
 
+	/**
+	 * Issue 13, item 4: a model nested deeper than the XML parser's default limit (100 elements)
+	 * was written by transform, then refused by validate. Everything KSE writes it reads back.
+	 */
+	@Test
+	void aDeeplyNestedModelThatTransformWritesValidates() throws IOException {
+		int depth = 150;
+		Path formula = directory.resolve("Deep.txt");
+		Files.writeString(formula, "Deep\ndeep = " + "(".repeat(depth) + "B" + ")+".repeat(depth) + "\n");
+		Path model = directory.resolve("Deep.stct");
+		Run transform = kse("transform", "-q", formula.toString(), "-o", model.toString());
+		assertEquals(Kse.OK, transform.code(), transform::all);
+		Run validate = kse("validate", model.toString());
+		assertEquals(Kse.OK, validate.code(), validate::all);
+		Run label = kse("label", model.toString());
+		assertEquals(Kse.OK, label.code(), label::all);
+	}
+
+	/**
+	 * Issue 13, items 3 and 9: a folder or a device given as the input used to print "kse: Is a
+	 * directory", "no such file" for /dev/null, or read /dev/zero until memory ran out.
+	 */
+	@Test
+	void anInputThatIsNotAFileIsNamedForWhatItIs() throws IOException {
+		for (String command : List.of("transform", "validate", "label")) {
+			Run folder = kse(command, directory.toString());
+			assertEquals(Kse.FAILED, folder.code(), folder::all);
+			assertTrue(folder.err().contains("kse: " + directory + ": is a folder, not a file"), folder::all);
+			if (Files.exists(Path.of("/dev/zero"))) {
+				Run device = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse(command, "/dev/zero"));
+				assertEquals(Kse.FAILED, device.code(), device::all);
+				assertTrue(device.err().contains("kse: /dev/zero: not a regular file"), device::all);
+			}
+		}
+	}
+
 	/** Issue 13, item 3: a .proto that is not UTF-8 in the source tree used to end the command with exit 0 and no word. */
 	@Test
 	void aSourceTreeFileThatIsNotTextIsNamedAndTheCommandFails() throws IOException {
