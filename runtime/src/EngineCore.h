@@ -43,6 +43,9 @@ class EngineCore {
   std::vector<TransitionSegmentBase*> Transitions() const;
   void SetObserver(Statechart::Observer observer);
 
+  /// The earliest wake-up time its blackboards hold, if any.
+  std::optional<kse::messaging::TimePoint> NextWakeup() const;
+
   bool IsStarted() const noexcept { return started_.load(std::memory_order_acquire); }
   bool IsActivated() const noexcept { return activated_.load(std::memory_order_acquire); }
 
@@ -93,7 +96,6 @@ class EngineCore {
   /// Steps until nothing fires or the bound is reached (then false, with a warning).
   bool StepUntilQuiet(std::size_t max_transitions, std::size_t first);
   void Loop();
-  std::optional<kse::messaging::TimePoint> NextWakeup() const;
   void WaitForActivities();
 
   void Report(const std::string& what) const;

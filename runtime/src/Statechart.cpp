@@ -23,6 +23,8 @@ constexpr auto kClockLook = std::chrono::seconds(1);
 
 OrState* AsOr(State* state) { return static_cast<OrState*>(state); }
 
+const OrState* AsOr(const State* state) { return static_cast<const OrState*>(state); }
+
 // The order in which Monas tried a state's transitions: each guarded one was inserted at the
 // front of the list as it was created, each unguarded one appended.
 void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
@@ -36,7 +38,6 @@ void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
   }
   outgoing.swap(ordered);
 }
-const OrState* AsOr(const State* state) { return static_cast<const OrState*>(state); }
 
 std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
 
@@ -234,10 +235,8 @@ void EngineCore::Prepare() {
     if (state->kind_ == StateKind::Or) {
       OrState* orState = AsOr(state);
       orState->start_ = nullptr;
-      orState->end_ = nullptr;
       for (State* child : state->children_) {
         if (child->kind_ == StateKind::Start) orState->start_ = child;
-        if (child->kind_ == StateKind::End) orState->end_ = child;
       }
       if (orState->IsRegion()) {
         if (!orState->region_blackboard_) {
@@ -867,6 +866,7 @@ std::size_t Statechart::GuardFailures() const noexcept { return core_->guard_fai
 std::size_t Statechart::ActionFailures() const noexcept { return core_->action_failures_.load(); }
 std::size_t Statechart::TransitionsTaken() const noexcept { return core_->transitions_taken_.load(); }
 std::size_t Statechart::StepNumber() const noexcept { return core_->step_number_.load(); }
+std::optional<kse::messaging::TimePoint> Statechart::NextWakeup() const { return core_->NextWakeup(); }
 std::size_t Statechart::RunningActivities() const noexcept {
   return core_->running_activities_.load();
 }

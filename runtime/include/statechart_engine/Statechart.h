@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -119,6 +120,9 @@ class Statechart : public OrState {
   std::size_t TransitionsTaken() const noexcept;
   /// Steps begun so far (an observer sees the number of the step that took the segment).
   std::size_t StepNumber() const noexcept;
+  /// The earliest time a TimeoutAction asked the engine to wake up at and that has not been
+  /// taken yet, if any (what a driver of a ManualClock advances to).
+  std::optional<kse::messaging::TimePoint> NextWakeup() const;
   /// Activities started and not finished yet.
   std::size_t RunningActivities() const noexcept;
 

@@ -103,7 +103,6 @@ class OrState : public State {
 
   State* active_child_ = nullptr;
   State* start_ = nullptr;
-  State* end_ = nullptr;
   std::unique_ptr<Blackboard> region_blackboard_;
   std::atomic<int> running_{0};  // activities of the region started and not finished
 };

@@ -390,21 +390,8 @@ class CaseRun {
   void Advance(const Command&, std::chrono::milliseconds by, std::vector<std::string>& out) {
     const TimePoint target = clock_.Now() + by;
     for (;;) {
-      std::optional<TimePoint> next;
-      if (eager_) {
-        next = clock_.Now() + std::chrono::milliseconds(1);
-      } else {
-        for (State* state : chart().States()) {
-          kse::messaging::Blackboard* board =
-              state->Parent() == nullptr ? &chart().RootBlackboard()
-              : state->Kind() == StateKind::Or
-                  ? static_cast<statechart_engine::OrState*>(state)->RegionBlackboard()
-                  : nullptr;
-          if (board == nullptr) continue;
-          const auto wakeup = board->NextWakeup();
-          if (wakeup && (!next || *wakeup < *next)) next = wakeup;
-        }
-      }
+      const std::optional<TimePoint> next =
+          eager_ ? std::optional<TimePoint>(clock_.Now() + std::chrono::milliseconds(1)) : chart().NextWakeup();
       if (!next || *next > target) break;
       clock_.Set(std::max(*next, clock_.Now()));
       Settle(out);
