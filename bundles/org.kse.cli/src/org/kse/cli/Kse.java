@@ -157,24 +157,24 @@ public final class Kse {
 		} catch (UncheckedIOException e) {
 			err.println("kse: " + e.getCause().getMessage());
 			return FAILED;
-		} catch (OutOfMemoryError e) {
-			return internalError(args[0], "out of memory: the input is too large for it");
-		} catch (StackOverflowError e) {
-			return internalError(args[0], "the input is nested too deeply for it");
-		} catch (RuntimeException | LinkageError e) {
-			return internalError(args[0], e.getMessage() == null ? "an internal error" : "an internal error: " + e.getMessage(), e);
+		} catch (RuntimeException | Error e) {
+			return internalError(args[0], e);
 		}
 	}
 
 	/**
-	 * Nothing may end a command silently (an uncaught error used to leave with exit code 0 and
-	 * its trace in the product's log only): say what happened, exit with 2, and show the trace
-	 * only when KSE_DEBUG is set.
+	 * Nothing may end a command silently (an uncaught error used to leave the Equinox
+	 * application with exit code 0 and its trace in the product's log only): say what happened,
+	 * exit with 2, and show the trace only when KSE_DEBUG is set.
 	 */
-	private int internalError(String command, String what, Throwable... cause) {
-		err.println("kse: " + command + " stopped: " + what + (System.getenv("KSE_DEBUG") == null ? " (set KSE_DEBUG=1 for details)" : ""));
-		if (System.getenv("KSE_DEBUG") != null && cause.length > 0) {
-			cause[0].printStackTrace(err);
+	private int internalError(String command, Throwable e) {
+		String what = e instanceof OutOfMemoryError ? "out of memory: the input is too large for it"
+				: e instanceof StackOverflowError ? "the input is nested too deeply for it"
+				: e.getMessage() == null ? "an internal error" : "an internal error: " + e.getMessage();
+		boolean debug = System.getenv("KSE_DEBUG") != null;
+		err.println("kse: " + command + " stopped: " + what + (debug ? "" : " (set KSE_DEBUG=1 for details)"));
+		if (debug) {
+			e.printStackTrace(err);
 		}
 		return FAILED;
 	}

@@ -9,14 +9,7 @@ public class KseApplication implements IApplication {
 	@Override
 	public Object start(IApplicationContext context) {
 		String[] args = (String[]) context.getArguments().getOrDefault(IApplicationContext.APPLICATION_ARGS, new String[0]);
-		int code;
-		try {
-			code = new Kse(System.out, System.err).run(args);
-		} catch (Throwable e) {
-			// Equinox would end the process with 0 and log the trace where nobody looks.
-			System.err.println("kse: stopped by an internal error (" + (e.getMessage() == null ? "no message" : e.getMessage()) + ")");
-			code = Kse.FAILED;
-		}
+		int code = new Kse(System.out, System.err).run(args);
 		System.out.flush();
 		System.err.flush();
 		return code;
