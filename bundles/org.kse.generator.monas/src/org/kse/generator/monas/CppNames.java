@@ -1,6 +1,11 @@
 package org.kse.generator.monas;
 
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /**
  * Turns model names into C++ identifiers, predictably: every character that cannot
@@ -19,8 +24,20 @@ public final class CppNames {
 			"return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct", "switch", "template",
 			"this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using",
 			"virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq",
-			// names the generated code itself uses, and file names Windows refuses
-			"NULL", "main", "std", "statechart_engine", "kse", "CON", "PRN", "AUX", "NUL");
+			// names the generated code itself uses
+			"NULL", "main", "std", "statechart_engine", "kse");
+
+	/** File names Windows refuses in any case and with any extension ("nul.h" is the null device). */
+	private static final Pattern WINDOWS_DEVICE = Pattern.compile("(?i)(CON|PRN|AUX|NUL|COM[0-9]|LPT[0-9])");
+
+	/**
+	 * The longest name KSE turns into a file name: a file system allows 255 bytes, and an atomic
+	 * write's temporary file adds 46 characters to the name (".", ".cpp", a UUID and ".tmp").
+	 */
+	public static final int MAX_NAME_LENGTH = 200;
+
+	/** Generated names (transition classes built from two labels) longer than this are shortened. */
+	private static final int MAX_GENERATED_LENGTH = 120;
 
 	private CppNames() {
 	}
@@ -39,7 +56,23 @@ public final class CppNames {
 			out.insert(0, '_');
 		}
 		String result = out.toString();
-		return KEYWORDS.contains(result) ? result + "_" : result;
+		return KEYWORDS.contains(result) || WINDOWS_DEVICE.matcher(result).matches() ? result + "_" : result;
+	}
+
+	/**
+	 * A generated name kept short enough for a file name: a long one keeps its beginning and gets a
+	 * hash of the whole, so it stays unique and the same on every run (deep models have long labels).
+	 */
+	public static String shortened(String name) {
+		if (name.length() <= MAX_GENERATED_LENGTH) {
+			return name;
+		}
+		try {
+			byte[] digest = MessageDigest.getInstance("SHA-256").digest(name.getBytes(StandardCharsets.UTF_8));
+			return name.substring(0, MAX_GENERATED_LENGTH - 17) + "_" + HexFormat.of().formatHex(digest, 0, 8);
+		} catch (NoSuchAlgorithmException e) {
+			throw new IllegalStateException("every Java runtime has SHA-256", e);
+		}
 	}
 
 	/**

@@ -5,7 +5,9 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 
 import org.eclipse.emf.common.util.TreeIterator;
@@ -20,6 +22,7 @@ import org.kse.model.NodeKind;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
+import org.kse.validation.Labels;
 
 /**
  * Every name the generated code uses, decided once per model so that the templates
@@ -40,6 +43,7 @@ public final class GenerationPlan {
 	private final Map<Node, String> variables = new HashMap<>();
 	private final Map<String, Node> activities = new LinkedHashMap<>();
 	private final List<PlannedTransition> transitions = new ArrayList<>();
+	private final List<String> problems = new ArrayList<>();
 
 	private final MessageCatalog catalog;
 	private final TreeMessages tree;
@@ -50,14 +54,17 @@ public final class GenerationPlan {
 		this.modelName = model.getName() == null ? model.getNodes().get(0).getName() : model.getName();
 		this.className = CppNames.identifier(modelName);
 		this.root = model.getNodes().get(0);
+		checkFileName("model (" + modelName + ")", className);
 		Set<String> used = new HashSet<>();
-		add(root, used);
+		Map<String, Node> activityByFolder = new HashMap<>();
+		add(root, used, activityByFolder);
 		for (TreeIterator<EObject> it = root.eAllContents(); it.hasNext();) {
 			if (it.next() instanceof Node node) {
-				add(node, used);
+				add(node, used, activityByFolder);
 			}
 		}
 		String namespace = "kse_statechart_" + className;
+		// Keys in lower case: two class files that differ only in case are one file on Windows and macOS.
 		Set<String> classes = new HashSet<>();
 		for (Transition transition : model.getTransitions()) {
 			String te = transition.getTE();
@@ -65,9 +72,9 @@ public final class GenerationPlan {
 			TransitionExpression expression = parsed.expression();
 			Condition condition = expression == null ? null : expression.getCondition();
 			List<Action> actions = expression == null || expression.getActions().isEmpty() ? null : List.copyOf(expression.getActions());
-			String base = CppNames.label(transition.getSource().getLabel()) + "_TO_" + CppNames.label(transition.getTarget().getLabel());
+			String base = CppNames.shortened(CppNames.label(transition.getSource().getLabel()) + "_TO_" + CppNames.label(transition.getTarget().getLabel()));
 			String unique = base;
-			for (int k = 2; !classes.add(unique); k++) {
+			for (int k = 2; !classes.add(unique.toLowerCase(Locale.ROOT)); k++) {
 				unique = base + "_" + k;
 			}
 			transitions.add(new PlannedTransition(transition.getName() == null ? unique : transition.getName(), transition.getSource(),
@@ -75,7 +82,7 @@ public final class GenerationPlan {
 		}
 	}
 
-	private void add(Node node, Set<String> used) {
+	private void add(Node node, Set<String> used, Map<String, Node> activityByFolder) {
 		nodes.add(node);
 		String base = "Node_" + CppNames.label(node.getLabel());
 		String variable = base;
@@ -84,8 +91,41 @@ public final class GenerationPlan {
 		}
 		variables.put(node, variable);
 		if (NodeKind.BASIC.is(node)) {
-			activities.putIfAbsent(activityName(node), node);
+			String activity = activityName(node);
+			Node first = activities.putIfAbsent(activity, node);
+			if (first != null) {
+				if (!Objects.equals(first.getName(), node.getName())) {
+					problems.add(Labels.describe(node) + ": its activity and that of " + Labels.describe(first) + " both become the C++ class '"
+							+ activity + "' (only letters, digits and '_' are kept); rename one of them");
+				}
+				return;
+			}
+			Node sameFolder = activityByFolder.putIfAbsent(activity.toLowerCase(Locale.ROOT), node);
+			if (sameFolder != null) {
+				problems.add(Labels.describe(node) + ": its activity '" + activity + "' and '" + activityName(sameFolder) + "' of "
+						+ Labels.describe(sameFolder) + " differ only in case, so their folders under activities/ are one folder on Windows and macOS; rename one of them");
+			} else if (activity.equals(className)) {
+				problems.add(Labels.describe(node) + ": its activity '" + activity + "' has the name of the statechart's C++ class; rename the activity or the model");
+			}
+			checkFileName(Labels.describe(node), activity);
 		}
+	}
+
+	/** A name that becomes a file name must leave room for the longest suffix KSE adds (".cpp", and an atomic write's temporary name). */
+	private void checkFileName(String element, String name) {
+		if (name.length() > CppNames.MAX_NAME_LENGTH) {
+			problems.add(element + ": the name is " + name.length() + " characters long; KSE's limit is " + CppNames.MAX_NAME_LENGTH
+					+ " because it becomes a file name");
+		}
+	}
+
+	/**
+	 * What makes the model impossible to generate although it validates: names that become the same
+	 * C++ name or the same file on a case-insensitive disk, names too long for a file. Each names
+	 * the elements involved, worded like a validation diagnostic.
+	 */
+	public List<String> problems() {
+		return List.copyOf(problems);
 	}
 
 	public static GenerationPlan of(Model model) {

@@ -2,8 +2,13 @@ package org.kse.generator.monas;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -105,6 +110,10 @@ public final class MonasGenerator {
 		}
 		progress.step(2, 3, "planning the C++ of " + model.getName());
 		GenerationPlan plan = GenerationPlan.of(model, catalog, TreeMessages.of(root.resolve(MESSAGES_FOLDER), messages.replacements()));
+		if (!plan.problems().isEmpty()) {
+			throw new ModelHasErrorsException(plan.problems());
+		}
+		// Everything is rendered before the first write, so a failure leaves the tree as it was.
 		Map<Path, String> owned = new LinkedHashMap<>();
 		Path chart = Path.of("statecharts", plan.className());
 		owned.put(chart.resolve(plan.className() + ".h"), MonasTemplates.statechartHeader(plan));
@@ -119,6 +128,16 @@ public final class MonasGenerator {
 				owned.put(chart.resolve("transitions").resolve(transition.actionClass() + ".h"), MonasTemplates.action(plan, transition));
 			}
 		}
+		Map<String, Map<String, String>> newActivities = new LinkedHashMap<>();
+		for (Map.Entry<String, Node> activity : plan.activities().entrySet()) {
+			String name = activity.getKey();
+			var inputs = activity.getValue().getVariables().stream().filter(v -> v.getType() != null && v.getType().split("\\.").length == 3).toList();
+			Map<String, String> files = new LinkedHashMap<>();
+			files.put(name + ".h", MonasTemplates.activityHeader(plan, name, inputs));
+			files.put(name + ".cpp", MonasTemplates.activitySource(name, inputs));
+			files.put("CMakeLists.txt", MonasTemplates.activityCmake(plan, name, inputs));
+			newActivities.put(name, files);
+		}
 		progress.step(3, 3, "writing into " + root);
 		List<Path> written = new ArrayList<>();
 		List<Path> unchanged = new ArrayList<>();
@@ -128,20 +147,103 @@ public final class MonasGenerator {
 			(write(root, file.getKey(), file.getValue()) ? written : unchanged).add(file.getKey());
 		}
 		removeStale(root, chart.resolve("transitions"), owned, removed);
-		for (Map.Entry<String, Node> activity : plan.activities().entrySet()) {
-			String name = activity.getKey();
-			Path folder = Path.of("activities", name);
-			if (Files.exists(inside(root, folder))) {
+		removeInterruptedWrites(root, chart);
+		removeInterruptedWrites(root, chart.resolve("transitions"));
+		removeAbandonedStaging(root);
+		for (Map.Entry<String, Map<String, String>> activity : newActivities.entrySet()) {
+			Path folder = Path.of("activities", activity.getKey());
+			if (createActivity(root, folder, activity.getValue())) {
+				activity.getValue().keySet().forEach(file -> written.add(folder.resolve(file)));
+			} else {
 				kept.add(folder);
-				continue;
 			}
-			var inputs = activity.getValue().getVariables().stream().filter(v -> v.getType() != null && v.getType().split("\\.").length == 3).toList();
-			write(root, folder.resolve(name + ".h"), MonasTemplates.activityHeader(plan, name, inputs));
-			write(root, folder.resolve(name + ".cpp"), MonasTemplates.activitySource(name, inputs));
-			write(root, folder.resolve("CMakeLists.txt"), MonasTemplates.activityCmake(plan, name, inputs));
-			written.addAll(List.of(folder.resolve(name + ".h"), folder.resolve(name + ".cpp"), folder.resolve("CMakeLists.txt")));
 		}
 		return new Report(written, unchanged, kept, removed, messages.replacements(), runtimeMismatches(model, messageFolders, messages));
+	}
+
+	/** Where an activity's files are assembled before the folder appears under its own name in one step. */
+	private static final String STAGING = ".kse-staging-";
+
+	/**
+	 * Creates an activity's folder with all its files, or leaves an existing one alone (it is the
+	 * user's). The files are written into a hidden folder that is then renamed, so a run that is
+	 * killed never leaves a half-made activity that later runs would take for the user's.
+	 */
+	private static boolean createActivity(Path root, Path relative, Map<String, String> files) throws IOException {
+		Path folder = inside(root, relative);
+		Path staging = inside(root, relative.resolveSibling(STAGING + relative.getFileName()));
+		if (Files.exists(folder, LinkOption.NOFOLLOW_LINKS)) {
+			if (!onlyInterruptedWrites(folder)) {
+				return false;
+			}
+			// Left by a generator before activities were staged, killed before it wrote a file.
+			deleteStaging(folder);
+		}
+		Files.createDirectories(staging);
+		for (Map.Entry<String, String> file : files.entrySet()) {
+			Files.writeString(staging.resolve(file.getKey()), file.getValue(), StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
+					StandardOpenOption.WRITE);
+		}
+		try {
+			Files.move(staging, folder, StandardCopyOption.ATOMIC_MOVE);
+		} catch (AtomicMoveNotSupportedException e) {
+			Files.move(staging, folder);
+		}
+		return true;
+	}
+
+	/** Activities a killed run was assembling. */
+	private static void removeAbandonedStaging(Path root) throws IOException {
+		Path activities = inside(root, Path.of("activities"));
+		if (!Files.isDirectory(activities, LinkOption.NOFOLLOW_LINKS)) {
+			return;
+		}
+		try (Stream<Path> folders = Files.list(activities)) {
+			for (Path folder : folders.filter(f -> f.getFileName().toString().startsWith(STAGING)).toList()) {
+				deleteStaging(folder);
+			}
+		}
+	}
+
+	/** True for a folder that holds nothing but temporary files of interrupted atomic writes. */
+	private static boolean onlyInterruptedWrites(Path folder) throws IOException {
+		if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
+			return false;
+		}
+		try (Stream<Path> files = Files.list(folder)) {
+			return files.allMatch(MonasGenerator::isInterruptedWrite);
+		}
+	}
+
+	private static boolean isInterruptedWrite(Path file) {
+		String name = file.getFileName().toString();
+		return name.startsWith(".") && name.endsWith(".tmp") && Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS);
+	}
+
+	/** Deletes a folder of KSE's own making (staging, or one holding only temporary files); no links are followed. */
+	private static void deleteStaging(Path folder) throws IOException {
+		if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
+			return;
+		}
+		try (Stream<Path> files = Files.list(folder)) {
+			for (Path file : files.toList()) {
+				Files.delete(file);
+			}
+		}
+		Files.delete(folder);
+	}
+
+	/** Temporary files that a killed run's atomic writes left in a folder the generator owns. */
+	private static void removeInterruptedWrites(Path root, Path relative) throws IOException {
+		Path folder = inside(root, relative);
+		if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
+			return;
+		}
+		try (Stream<Path> files = Files.list(folder)) {
+			for (Path file : files.filter(MonasGenerator::isInterruptedWrite).toList()) {
+				Files.delete(file);
+			}
+		}
 	}
 
 	private static final Pattern DIAGNOSTIC = Pattern.compile("(?s)(.*?\\): )(expression \\d+:\\d+: )?(.*)");
@@ -198,11 +300,30 @@ public final class MonasGenerator {
 		}
 	}
 
-	/** A path under the source folder; anything that would leave it is refused. */
+	/**
+	 * A path under the source folder; anything that would leave it is refused, also through a
+	 * symbolic link (a shared tree could link {@code statecharts} to a folder of the victim's).
+	 */
 	static Path inside(Path root, Path relative) throws IOException {
 		Path resolved = root.resolve(relative).normalize();
 		if (!resolved.startsWith(root) || resolved.equals(root)) {
 			throw new IOException("refusing to write outside " + root + ": " + relative);
+		}
+		if (Files.exists(root)) {
+			Path realRoot = root.toRealPath();
+			Path existing = resolved;
+			while (!Files.exists(existing, LinkOption.NOFOLLOW_LINKS)) {
+				existing = existing.getParent();
+			}
+			Path real;
+			try {
+				real = existing.toRealPath();
+			} catch (NoSuchFileException e) {
+				throw new IOException("refusing to write through " + existing + ": a symbolic link to nothing");
+			}
+			if (!real.startsWith(realRoot)) {
+				throw new IOException("refusing to write outside " + root + ": " + root.relativize(existing) + " is a symbolic link to " + real);
+			}
 		}
 		return resolved;
 	}

@@ -365,6 +365,126 @@ class GeneratorTest {
 		assertTrue(field.errors().get(0).contains("'TeamMessage' has no field 'rank'"), field.errors().toString());
 	}
 
+	@Test
+	void namesThatBecomeTheSameIdentifierAreErrorsNamingBoth(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		node(model, "0.3").setName("a-b");
+		node(model, "0.4.1.2").setName("a.b");
+		ModelHasErrorsException refused = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertEquals(List.of("0.4.1.2 (a.b): its activity and that of 0.3 (a-b) both become the C++ class 'a_b' (only letters, digits and '_'"
+				+ " are kept); rename one of them"), refused.errors());
+		assertNothingWritten(folder);
+	}
+
+	@Test
+	void namesThatDifferOnlyInCaseAreErrorsNamingBoth(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		node(model, "0.3").setName("Scan");
+		node(model, "0.4.1.2").setName("scan");
+		ModelHasErrorsException refused = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertEquals(1, refused.errors().size(), refused.errors().toString());
+		assertTrue(refused.errors().get(0).startsWith("0.4.1.2 (scan): its activity 'scan' and 'Scan' of 0.3 (Scan) differ only in case"),
+				refused.errors().get(0));
+		assertNothingWritten(folder);
+	}
+
+	@Test
+	void anActivityNamedLikeItsStatechartIsAnError(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		node(model, "0.3").setName("AllKinds");
+		ModelHasErrorsException refused = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertEquals(List.of("0.3 (AllKinds): its activity 'AllKinds' has the name of the statechart's C++ class; rename the activity or the model"),
+				refused.errors());
+	}
+
+	@Test
+	void aNameTooLongForAFileIsRefusedBeforeAnythingIsWritten(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		node(model, "0.4.2.2").setName("W".repeat(300));
+		ModelHasErrorsException refused = assertThrows(ModelHasErrorsException.class, () -> MonasGenerator.generate(model, folder, Options.DEFAULT));
+		assertEquals(List.of("0.4.2.2 (" + "W".repeat(300) + "): the name is 300 characters long; KSE's limit is 200 because it becomes a file name"),
+				refused.errors());
+		assertNothingWritten(folder);
+		node(model, "0.4.2.2").setName("W".repeat(200));
+		MonasGenerator.generate(model, folder, Options.DEFAULT);
+		assertTrue(Files.isRegularFile(folder.resolve("activities/" + "W".repeat(200) + "/" + "W".repeat(200) + ".cpp")));
+	}
+
+	@Test
+	void longLabelsGiveShortUniqueTransitionFiles(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		for (var it = model.eAllContents(); it.hasNext();) {
+			if (it.next() instanceof Node node) {
+				node.setLabel(node.getLabel() + ".1".repeat(200));
+			}
+		}
+		Report report = MonasGenerator.generate(model, folder, Options.DEFAULT);
+		List<String> transitions = new ArrayList<>();
+		try (Stream<Path> list = Files.list(folder.resolve("statecharts/AllKinds/transitions"))) {
+			list.map(p -> p.getFileName().toString()).forEach(transitions::add);
+		}
+		assertFalse(transitions.isEmpty());
+		transitions.forEach(name -> assertTrue(name.length() <= 140, name));
+		assertEquals(transitions.size(), transitions.stream().map(String::toLowerCase).distinct().count(), transitions.toString());
+		assertEquals(List.of(), MonasGenerator.generate(model, folder, Options.DEFAULT).written(), "the same names on the next run");
+		assertTrue(report.written().size() > 5);
+	}
+
+	@Test
+	void windowsDeviceNamesAreEscapedInAnyCase(@TempDir Path folder) throws Exception {
+		Model model = allKinds();
+		node(model, "0.3").setName("nul");
+		node(model, "0.4.1.2").setName("Com1");
+		MonasGenerator.generate(model, folder, Options.DEFAULT);
+		assertTrue(Files.isRegularFile(folder.resolve("activities/nul_/nul_.h")));
+		assertTrue(Files.isRegularFile(folder.resolve("activities/Com1_/Com1_.cpp")));
+	}
+
+	@Test
+	void aKilledGenerationLeavesNoHalfMadeActivityAndTheNextRunCompletesIt(@TempDir Path folder) throws Exception {
+		// What a run killed while writing leaves: a temporary file in a new activity folder (by an
+		// older KSE), an activity being assembled, a temporary file beside the statechart.
+		Files.createDirectories(folder.resolve("activities/Search"));
+		Files.writeString(folder.resolve("activities/Search/.Search.h.0b1c.tmp"), "#ifndef");
+		Files.createDirectories(folder.resolve("activities/.kse-staging-Track"));
+		Files.writeString(folder.resolve("activities/.kse-staging-Track/Track.h"), "#ifndef");
+		Files.createDirectories(folder.resolve("statecharts/AllKinds"));
+		Files.writeString(folder.resolve("statecharts/AllKinds/.AllKinds.cpp.77aa.tmp"), "#include");
+		Report report = MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
+		assertEquals(List.of(), report.kept(), "nothing half-made is taken for the user's");
+		for (String activity : List.of("Search", "Track", "Walk")) {
+			try (Stream<Path> list = Files.list(folder.resolve("activities").resolve(activity))) {
+				assertEquals(List.of("CMakeLists.txt", activity + ".cpp", activity + ".h"), list.map(p -> p.getFileName().toString()).sorted().toList());
+			}
+		}
+		try (Stream<Path> list = Files.list(folder.resolve("activities"))) {
+			assertEquals(List.of("Search", "Track", "Walk"), list.map(p -> p.getFileName().toString()).sorted().toList());
+		}
+		assertFalse(Files.exists(folder.resolve("statecharts/AllKinds/.AllKinds.cpp.77aa.tmp")));
+		Files.writeString(folder.resolve("activities/Walk/Walk.cpp"), "// mine");
+		assertEquals(3, MonasGenerator.generate(allKinds(), folder, Options.DEFAULT).kept().size());
+		assertEquals("// mine", Files.readString(folder.resolve("activities/Walk/Walk.cpp")));
+	}
+
+	@Test
+	void writesDoNotFollowASymbolicLinkOutOfTheTree(@TempDir Path temporary) throws Exception {
+		Path folder = Files.createDirectories(temporary.resolve("tree"));
+		Path elsewhere = Files.createDirectories(temporary.resolve("elsewhere"));
+		Files.createSymbolicLink(folder.resolve("statecharts"), elsewhere);
+		IOException refused = assertThrows(IOException.class, () -> MonasGenerator.generate(allKinds(), folder, Options.DEFAULT));
+		assertTrue(refused.getMessage().startsWith("refusing to write outside " + folder.toAbsolutePath() + ": statecharts is a symbolic link to "),
+				refused.getMessage());
+		try (Stream<Path> list = Files.list(elsewhere)) {
+			assertEquals(List.of(), list.toList());
+		}
+	}
+
+	private static void assertNothingWritten(Path folder) throws IOException {
+		try (Stream<Path> walk = Files.list(folder)) {
+			assertEquals(List.of(), walk.toList(), "nothing written");
+		}
+	}
+
 	private static Node node(Model model, String label) {
 		for (var it = model.eAllContents(); it.hasNext();) {
 			if (it.next() instanceof Node node && label.equals(node.getLabel())) {
