@@ -17,6 +17,7 @@ import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.generator.monas.MonasGenerator;
 import org.kse.labeling.Labeler;
+import org.kse.messages.ProtoProblem;
 import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
@@ -265,6 +266,10 @@ public final class Kse {
 		note(file, messages.replacements(), sourceFolder, false);
 		int errors = 0;
 		int warnings = 0;
+		for (ProtoProblem problem : messages.problems()) {
+			warnings++;
+			out.println(messageProblem(problem));
+		}
 		for (Diagnostic diagnostic : ModelValidation.validate(model, messages.catalog()).getChildren()) {
 			boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
 			errors += error ? 1 : 0;
@@ -314,6 +319,9 @@ public final class Kse {
 			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages")),
 					(step, steps, what) -> progress(step, steps, what));
 			note(file, report.replacements(), folder, true);
+			for (ProtoProblem problem : report.messageProblems()) {
+				err.println(messageProblem(problem));
+			}
 			for (String warning : report.warnings()) {
 				err.println(file + ": " + withSeverity(warning, "warning"));
 			}
@@ -421,6 +429,14 @@ public final class Kse {
 			Thread.currentThread().interrupt();
 		}
 		return OK;
+	}
+
+	/**
+	 * A problem in a source tree's own .proto file. A warning, not an error: the model may not use
+	 * the message, and KSE's reading of .proto is not protoc's; protoc decides when the tree is built.
+	 */
+	private static String messageProblem(ProtoProblem problem) {
+		return problem.file() + ":" + problem.line() + ":" + problem.column() + ": warning: " + problem.message();
 	}
 
 	/**

@@ -36,8 +36,23 @@ public final class StandardMessages {
 	public record Replacement(String type, Path standardFile, Path file) {
 	}
 
-	/** The catalog of a source tree, and the standard types its files replaced (in the standard files' order). */
-	public record Merged(MessageCatalog catalog, List<Replacement> replacements) {
+	/**
+	 * The catalog of a source tree, the standard types its files replaced (in the standard files'
+	 * order), and what is wrong in the tree's own files, each named by its path in its folder.
+	 */
+	public record Merged(MessageCatalog catalog, List<Replacement> replacements, Map<Path, Path> userFiles) {
+
+		/** Problems of the source tree's own .proto files, with the paths a user can open. */
+		public List<ProtoProblem> problems() {
+			List<ProtoProblem> problems = new ArrayList<>();
+			for (ProtoProblem problem : catalog.problems()) {
+				Path file = problem.file() == null ? null : userFiles.get(problem.file());
+				if (file != null) {
+					problems.add(new ProtoProblem(file, problem.line(), problem.column(), problem.message()));
+				}
+			}
+			return problems;
+		}
 	}
 
 	private static volatile List<ProtoFile> standard;
@@ -112,6 +127,7 @@ public final class StandardMessages {
 
 	public static Merged merge(List<Path> folders, Set<Path> leftOut) {
 		List<ProtoFile> user = new ArrayList<>();
+		Map<Path, Path> userFiles = new HashMap<>();
 		Map<String, Path> defined = new HashMap<>();
 		for (Path folder : folders) {
 			if (!Files.isDirectory(folder)) {
@@ -123,6 +139,7 @@ public final class StandardMessages {
 						continue;
 					}
 					ProtoFile parsed = ProtoParser.parse(folder.relativize(file), readText(file));
+					userFiles.putIfAbsent(folder.relativize(file), file);
 					user.add(parsed);
 					parsed.messages().forEach(type -> defined.putIfAbsent(type.fullName(), file));
 					parsed.enums().forEach(type -> defined.putIfAbsent(type.fullName(), file));
@@ -132,7 +149,7 @@ public final class StandardMessages {
 			}
 		}
 		if (user.isEmpty()) {
-			return new Merged(catalog(), List.of());
+			return new Merged(catalog(), List.of(), Map.of());
 		}
 		List<Replacement> replacements = new ArrayList<>();
 		// Linking a catalog resolves the field types of its files in place: the shared standard
@@ -152,7 +169,7 @@ public final class StandardMessages {
 					: new ProtoFile(file.file(), file.syntax(), file.packageName(), file.imports(), messages, enums, file.problems()));
 		}
 		merged.addAll(user);
-		return new Merged(MessageCatalog.of(merged), List.copyOf(replacements));
+		return new Merged(MessageCatalog.of(merged), List.copyOf(replacements), Map.copyOf(userFiles));
 	}
 
 	private static boolean replaces(ProtoFile file, Map<String, Path> defined) {

@@ -19,7 +19,16 @@ import org.eclipse.emf.ecore.resource.impl.FileURIHandlerImpl;
 import org.eclipse.emf.ecore.resource.impl.PlatformResourceURIHandlerImpl;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.xmi.XMLResource;
+import org.eclipse.emf.common.util.WrappedException;
+import org.eclipse.emf.ecore.xmi.XMLLoad;
+import org.eclipse.emf.ecore.xmi.impl.SAXXMIHandler;
+import org.eclipse.emf.ecore.xmi.impl.XMILoadImpl;
 import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
+import org.eclipse.emf.ecore.xmi.impl.XMIResourceImpl;
+import org.xml.sax.Attributes;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+import org.xml.sax.helpers.DefaultHandler;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.StatechartPackage;
 
@@ -55,8 +64,14 @@ public final class StatechartResources {
 		resourceSet.getURIConverter().getURIHandlers()
 				.removeIf(handler -> !(handler instanceof FileURIHandlerImpl || handler instanceof PlatformResourceURIHandlerImpl));
 		resourceSet.getPackageRegistry().put(StatechartPackage.eNS_URI, StatechartPackage.eINSTANCE);
-		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put(FILE_EXTENSION, new XMIResourceFactoryImpl());
-		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put("*", new XMIResourceFactoryImpl());
+		Resource.Factory factory = new XMIResourceFactoryImpl() {
+			@Override
+			public Resource createResource(URI uri) {
+				return new PositionedResource(uri);
+			}
+		};
+		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put(FILE_EXTENSION, factory);
+		resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put("*", factory);
 		return resourceSet;
 	}
 
@@ -75,7 +90,7 @@ public final class StatechartResources {
 		try {
 			resource.load(loadOptions());
 		} catch (IOException | RuntimeException e) {
-			throw new IOException(file + ": not a statechart model (" + rootCause(e) + ")", e);
+			throw new IOException(loadFailure(file, e), e);
 		}
 		if (resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof Model model)) {
 			throw new IOException(file + ": not a statechart model (its root element is not statechart:Model)");
@@ -181,7 +196,191 @@ public final class StatechartResources {
 		// the original tool's files are ASCII with character references; keep that
 		options.put(XMLResource.OPTION_ENCODING, "ASCII");
 		options.put(XMLResource.OPTION_SAVE_TYPE_INFORMATION, Boolean.FALSE);
+		// A reference that points nowhere is written as an href; its text must be escaped like any
+		// other value, or the file cannot be read back (EMF skips escaping URIs by default).
+		options.put(XMLResource.OPTION_SKIP_ESCAPE_URI, Boolean.FALSE);
 		return options;
+	}
+
+	/**
+	 * An XMI resource whose loading errors say where they are: an element that EMF cannot place
+	 * (a state where a transition belongs, one value where a list is expected) raises a Java
+	 * exception without a position; here it becomes a parse error at the element's line and column.
+	 */
+	private static final class PositionedResource extends XMIResourceImpl {
+		PositionedResource(URI uri) {
+			super(uri);
+		}
+
+		@Override
+		protected XMLLoad createXMLLoad() {
+			return new XMILoadImpl(createXMLHelper()) {
+				@Override
+				protected DefaultHandler makeDefaultHandler() {
+					return new SAXXMIHandler(resource, helper, options) {
+						@Override
+						public void startElement(String uri, String localName, String name, Attributes attributes) throws SAXException {
+							try {
+								super.startElement(uri, localName, name, attributes);
+							} catch (RuntimeException e) {
+								throw positioned("the element <" + name + ">", e);
+							}
+						}
+
+						@Override
+						public void endElement(String uri, String localName, String name) {
+							try {
+								super.endElement(uri, localName, name);
+							} catch (RuntimeException e) {
+								throw new WrappedException(positioned("the end of <" + name + ">", e));
+							}
+						}
+
+						@Override
+						public void characters(char[] text, int start, int length) {
+							try {
+								super.characters(text, start, length);
+							} catch (RuntimeException e) {
+								throw new WrappedException(positioned("the text", e));
+							}
+						}
+
+						/**
+						 * References are resolved at the end of the document, where EMF records a broken one
+						 * without a position; it is found again to name its line and column.
+						 */
+						@Override
+						protected void handleForwardReferences(boolean isEndDocument) {
+							int before = xmlResource.getErrors().size();
+							try {
+								super.handleForwardReferences(isEndDocument);
+							} catch (RuntimeException e) {
+								findBrokenReference();
+								throw e;
+							}
+							if (xmlResource.getErrors().size() > before) {
+								findBrokenReference();
+							}
+						}
+
+						private void findBrokenReference() {
+							for (SingleReference reference : forwardSingleReferences) {
+								check(reference.getFeature(), reference.getValue(), reference.getLineNumber(), reference.getColumnNumber());
+							}
+							for (ManyReference reference : forwardManyReferences) {
+								if (!reference.getFeature().isMany() && reference.getValues().length > 1) {
+									throw new WrappedException(new SAXParseException("the reference in " + reference.getFeature().getName() + " names "
+											+ reference.getValues().length + " elements; it takes one", null, null, reference.getLineNumber(), reference.getColumnNumber()));
+								}
+								for (Object value : reference.getValues()) {
+									check(reference.getFeature(), value, reference.getLineNumber(), reference.getColumnNumber());
+								}
+							}
+						}
+
+						private void check(org.eclipse.emf.ecore.EStructuralFeature feature, Object id, int line, int column) {
+							Object target;
+							try {
+								target = id instanceof String text ? xmlResource.getEObject(text) : id;
+							} catch (RuntimeException e) {
+								target = e;
+							}
+							if (target != null && !feature.getEType().isInstance(target)) {
+								SAXParseException parse = new SAXParseException("the reference " + quote(String.valueOf(id)) + " in " + feature.getName() + " does not lead to a "
+										+ feature.getEType().getName(), null, null, line, column);
+								throw new WrappedException(parse);
+							}
+						}
+
+						private SAXParseException positioned(String what, RuntimeException e) {
+							String why = e instanceof ClassCastException ? "does not belong where it is"
+									: "cannot be read (" + userText(rootCause(e)) + ")";
+							SAXParseException parse = new SAXParseException(what + " " + why, locator);
+							parse.initCause(e);
+							return parse;
+						}
+					};
+				}
+			};
+		}
+	}
+
+	/**
+	 * Why a file is not a model, in the user's terms and with the line and column where the input
+	 * has them: the XML parser's and EMF's diagnostics carry a position; a malformed number or
+	 * reference (Java's NumberFormatException, raised while references are resolved at the end of
+	 * the document) is found again in the text.
+	 */
+	private static String loadFailure(Path file, Throwable e) {
+		for (Throwable cause = e; cause != null; cause = cause.getCause() == cause ? null : cause.getCause()) {
+			if (cause instanceof SAXParseException parse && parse.getLineNumber() > 0) {
+				return where(file, parse) + ": not a statechart model: " + xmlMessage(parse);
+			}
+			if (cause instanceof Resource.Diagnostic diagnostic && diagnostic.getLine() > 0) {
+				return file + ":" + diagnostic.getLine() + ":" + Math.max(diagnostic.getColumn(), 1) + ": not a statechart model: " + userText(diagnostic.getMessage());
+			}
+			if (cause instanceof NumberFormatException number) {
+				java.util.regex.Matcher input = java.util.regex.Pattern.compile("For input string: \"(.*)\"").matcher(String.valueOf(number.getMessage()));
+				String text = input.find() ? input.group(1) : "";
+				return file + position(file, text) + ": not a statechart model: the number or reference " + quote(text) + " is malformed";
+			}
+		}
+		Throwable root = e;
+		while (root.getCause() != null && root.getCause() != root) {
+			root = root.getCause();
+		}
+		return file + ": not a statechart model (" + (root instanceof ClassCastException ? "an element or a reference of the wrong kind" : userText(rootCause(e))) + ")";
+	}
+
+	/** Input text in a message: short, and without control characters that would garble the terminal. */
+	private static String quote(String text) {
+		String shown = text.length() > 60 ? text.substring(0, 60) + "…" : text;
+		return "'" + shown.codePoints().map(c -> Character.isISOControl(c) || c == 0xfffd ? '?' : c)
+				.collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append) + "'";
+	}
+
+	/** ":line:column" of the first occurrence of a text in the file, or nothing when it cannot be found. */
+	private static String position(Path file, String text) {
+		try {
+			String content = Files.readString(file, java.nio.charset.StandardCharsets.ISO_8859_1);
+			int at = text.isEmpty() ? -1 : content.indexOf(text);
+			if (at < 0) {
+				return "";
+			}
+			int line = 1;
+			int lineStart = 0;
+			for (int i = 0; i < at; i++) {
+				if (content.charAt(i) == '\n') {
+					line++;
+					lineStart = i + 1;
+				}
+			}
+			return ":" + line + ":" + (at - lineStart + 1);
+		} catch (IOException unreadable) {
+			return "";
+		}
+	}
+
+	/** "file:line:column" of an XML parser's error. */
+	public static String where(Path file, SAXParseException e) {
+		return file + (e.getLineNumber() > 0 ? ":" + e.getLineNumber() + ":" + Math.max(e.getColumnNumber(), 1) : "");
+	}
+
+	/** An XML parser's message in a user's terms: without the JDK's message codes and property names. */
+	public static String xmlMessage(SAXException e) {
+		String message = String.valueOf(e.getMessage());
+		if (message.startsWith("Content is not allowed in prolog")) {
+			return "the file is not XML (a model file begins with <?xml or <statechart:Model)";
+		}
+		if (message.contains("maxElementDepth")) {
+			return "the XML nests elements deeper than " + MAX_ELEMENT_DEPTH + ", which KSE does not read";
+		}
+		return userText(message.replaceFirst("^JAXP\\d+: ", "").replaceAll("\\s*set by \"jdk\\.xml\\.\\w+\"\\.?", ""));
+	}
+
+	/** A library's message without Java in it (class names, object identities). */
+	private static String userText(String message) {
+		return message == null ? "" : message.replaceFirst(" \\((file|platform):[^()]*, \\d+, \\d+\\)$", "").replaceAll("\\b(?:[a-z]\\w*\\.)+([A-Z]\\w*)(?:Impl)?@[0-9a-f]+", "$1").replaceAll("\\b(?:java|javax|org|com)\\.(?:\\w+\\.)+(\\w+)", "$1");
 	}
 
 	private static String rootCause(Throwable e) {

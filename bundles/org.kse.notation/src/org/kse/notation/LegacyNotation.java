@@ -9,10 +9,12 @@ import java.util.Map;
 import javax.xml.parsers.DocumentBuilderFactory;
 import javax.xml.parsers.ParserConfigurationException;
 
+import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.w3c.dom.Element;
 import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
 
 /**
  * The positions and sizes of the original tool's GMF diagram ({@code .kse}): each notation node
@@ -32,7 +34,17 @@ public final class LegacyNotation {
 			factory.setNamespaceAware(false);
 			factory.setExpandEntityReferences(false);
 			factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-			var document = factory.newDocumentBuilder().parse(kseFile.toFile());
+			// as deep as a model may be (the JDK's default of 100 is less than a deep model's diagram)
+			factory.setAttribute("jdk.xml.maxElementDepth", String.valueOf(StatechartResources.MAX_ELEMENT_DEPTH));
+			var builder = factory.newDocumentBuilder();
+			// The default handler prints "[Fatal Error] …" on the terminal besides throwing.
+			builder.setErrorHandler(new org.xml.sax.helpers.DefaultHandler() {
+				@Override
+				public void fatalError(SAXParseException e) throws SAXException {
+					throw e;
+				}
+			});
+			var document = builder.parse(kseFile.toFile());
 			var references = document.getElementsByTagName("element");
 			for (int i = 0; i < references.getLength(); i++) {
 				Element reference = (Element) references.item(i);
@@ -46,11 +58,15 @@ public final class LegacyNotation {
 					constraint = null;
 				}
 				bounds.put(href.substring(hash + 1), constraint == null ? new double[] { 0, 0, -1, -1 }
-						: new double[] { number(constraint, "x", 0), number(constraint, "y", 0), number(constraint, "width", -1),
-								number(constraint, "height", -1) });
+						: new double[] { number(kseFile, constraint, "x", 0), number(kseFile, constraint, "y", 0),
+								number(kseFile, constraint, "width", -1), number(kseFile, constraint, "height", -1) });
 			}
-		} catch (ParserConfigurationException | SAXException | NumberFormatException e) {
-			throw new IOException(kseFile + ": not a diagram of the original KSE: " + e.getMessage(), e);
+		} catch (SAXParseException e) {
+			throw new IOException(StatechartResources.where(kseFile, e) + ": not a diagram of the original KSE: " + StatechartResources.xmlMessage(e), e);
+		} catch (SAXException e) {
+			throw new IOException(kseFile + ": not a diagram of the original KSE: " + StatechartResources.xmlMessage(e), e);
+		} catch (ParserConfigurationException e) {
+			throw new IOException(kseFile + ": cannot be read: " + e.getMessage(), e);
 		}
 		Notation notation = new Notation();
 		for (Node root : model.getNodes()) {
@@ -92,9 +108,26 @@ public final class LegacyNotation {
 		return null;
 	}
 
-	private static double number(Element element, String attribute, double otherwise) {
+	/** The largest coordinate or size taken from a diagram: far beyond any screen, small enough to lay out. */
+	private static final double MAX_COORDINATE = 1_000_000;
+
+	private static double number(Path kseFile, Element element, String attribute, double otherwise) throws IOException {
 		String value = element.getAttribute(attribute);
-		return value.isEmpty() ? otherwise : Double.parseDouble(value);
+		if (value.isEmpty()) {
+			return otherwise;
+		}
+		double number;
+		try {
+			number = Double.parseDouble(value);
+		} catch (NumberFormatException e) {
+			number = Double.NaN;
+		}
+		if (!(Math.abs(number) <= MAX_COORDINATE)) {
+			String shown = value.length() > 40 ? value.substring(0, 40) + "…" : value;
+			throw new IOException(kseFile + ": not a diagram of the original KSE: the " + attribute + " of a <" + element.getTagName() + "> is '"
+					+ shown.replaceAll("\\p{Cntrl}", "?") + "', not a number from -" + (long) MAX_COORDINATE + " to " + (long) MAX_COORDINATE);
+		}
+		return number;
 	}
 
 	/** The original's diagram next to a model: {@code Goalie.kse} for {@code Goalie.stct}. */

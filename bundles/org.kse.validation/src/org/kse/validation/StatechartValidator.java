@@ -85,14 +85,16 @@ public class StatechartValidator implements EValidator {
 			error(diagnostics, ROOT, model, "the model needs exactly one root state; it has " + model.getNodes().size());
 		}
 		if (!model.getNodes().isEmpty() && !NodeKind.OR.is(model.getNodes().get(0))) {
-			error(diagnostics, ROOT, model.getNodes().get(0), "the root state must be an OR state, not " + model.getNodes().get(0).getType());
+			error(diagnostics, ROOT, model.getNodes().get(0), "the root state must be an OR state, not "
+					+ (model.getNodes().get(0).getType() == null ? "a state without a type" : model.getNodes().get(0).getType()));
 		}
 	}
 
 	private void validateNode(Node node, DiagnosticChain diagnostics, Map<Object, Object> context) {
 		NodeKind kind = NodeKind.of(node);
 		if (kind == null) {
-			error(diagnostics, NODE_TYPE, node, "unknown state type '" + node.getType() + "': use OR, AND, BASIC, START, END or CONDITION");
+			error(diagnostics, NODE_TYPE, node, (node.getType() == null ? "the state has no type" : "unknown state type '" + node.getType() + "'")
+					+ ": use OR, AND, BASIC, START, END or CONDITION");
 			return;
 		}
 		checkUniqueLabel(node, diagnostics, context);

@@ -22,6 +22,7 @@ import java.util.stream.Stream;
 
 import org.eclipse.emf.common.util.Diagnostic;
 import org.kse.messages.MessageCatalog;
+import org.kse.messages.ProtoProblem;
 import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
@@ -57,7 +58,7 @@ public final class MonasGenerator {
 	 * tree's own .proto files replaced; and warnings worded as diagnostics ({@code label (name): message}).
 	 */
 	public record Report(List<Path> written, List<Path> unchanged, List<Path> kept, List<Path> removed,
-			List<StandardMessages.Replacement> replacements, List<String> warnings) {
+			List<StandardMessages.Replacement> replacements, List<String> warnings, List<ProtoProblem> messageProblems) {
 	}
 
 	/** Reports each step of a long generation: step of total, and what it is doing. */
@@ -158,7 +159,8 @@ public final class MonasGenerator {
 				kept.add(folder);
 			}
 		}
-		return new Report(written, unchanged, kept, removed, messages.replacements(), runtimeMismatches(model, messageFolders, messages));
+		return new Report(written, unchanged, kept, removed, messages.replacements(), runtimeMismatches(model, messageFolders, messages),
+				messages.problems());
 	}
 
 	/** Where an activity's files are assembled before the folder appears under its own name in one step. */

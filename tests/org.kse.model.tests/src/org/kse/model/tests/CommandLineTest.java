@@ -291,7 +291,7 @@ class CommandLineTest {
 		for (String command : List.of("validate", "label")) {
 			Run run = kse(command, formula.toString());
 			assertEquals(Kse.FAILED, run.code(), run.all());
-			assertTrue(run.err().contains(formula + ": not a statechart model"), run.all());
+			assertTrue(run.err().contains(formula + ":1:1: not a statechart model: the file is not XML"), run.all());
 		}
 		assertEquals(List.of(formula), list(directory));
 	}
@@ -540,6 +540,47 @@ class CommandLineTest {
 			assertTrue(run.err().contains("kse: " + binary + ": not a text file (it is not UTF-8)"), run::all);
 			assertFalse(run.err().contains("Exception"), run::all);
 		}
+	}
+
+	/** Issue 13, item 9: a .proto file that cannot be read used to be skipped without a word. */
+	@Test
+	void aGarbageProtoFileInTheSourceTreeIsReportedWithItsPosition() throws IOException {
+		Path source = directory.resolve("src");
+		Path messages = Files.createDirectories(source.resolve("messages"));
+		Files.writeString(messages.resolve("Bad.proto"), "syntax = \"proto2\";\nmessage Broken {\n  optional int32 = 1;\n}\n");
+		Path goalie = Models.LEGACY.resolve("Goalie/Goalie.stct");
+		Run validate = kse("validate", goalie.toString(), source.toString());
+		assertEquals(Kse.OK, validate.code(), validate::all);
+		assertTrue(Pattern.compile(Pattern.quote(messages.resolve("Bad.proto").toString()) + ":3:\\d+: warning: ").matcher(validate.out()).find(), validate::all);
+		assertTrue(validate.err().contains("0 errors, 1 warning"), validate::all);
+		Run generate = kse("generate", "-q", goalie.toString(), source.toString());
+		assertEquals(Kse.OK, generate.code(), generate::all);
+		assertTrue(generate.err().startsWith(messages.resolve("Bad.proto") + ":3:"), generate::all);
+	}
+
+	/**
+	 * Issue 13, item 9: a file that EMF cannot place (a reference to the model where a state
+	 * belongs, two states where one is expected, a malformed number) used to print Java's text
+	 * (class names, "For input string") without a position.
+	 */
+	@Test
+	void aBrokenReferenceInAModelIsNamedAtItsLineAndColumn() throws IOException {
+		String goalie = Files.readString(Models.LEGACY.resolve("Goalie/Goalie.stct"));
+		Path toTheModel = directory.resolve("ToTheModel.stct");
+		Files.writeString(toTheModel, goalie.replaceFirst("source=\"//@nodes.0/@Children.1\"", "source=\"/\""));
+		Path twoSources = directory.resolve("TwoSources.stct");
+		Files.writeString(twoSources, goalie.replaceFirst("source=\"//@nodes.0/@Children.1\"", "source=\"start kick\""));
+		Path badNumber = directory.resolve("BadNumber.stct");
+		Files.writeString(badNumber, goalie.replaceFirst("source=\"//@nodes.0/@Children.1\"", "source=\"//@nodes.0/@Children.1e999\""));
+		for (Path model : List.of(toTheModel, twoSources, badNumber)) {
+			Run run = kse("validate", model.toString());
+			assertEquals(Kse.FAILED, run.code(), run::all);
+			assertTrue(Pattern.compile("^kse: " + Pattern.quote(model.toString()) + ":\\d+:\\d+: not a statechart model: ").matcher(run.err()).find(), run::all);
+			assertFalse(Pattern.compile("Exception|Impl|For input string|java\\.").matcher(run.err()).find(), run::all);
+		}
+		assertTrue(kse("validate", toTheModel.toString()).err().endsWith(": not a statechart model: the reference '/' in source does not lead to a Node\n"));
+		assertTrue(kse("validate", twoSources.toString()).err().endsWith(": not a statechart model: Unresolved reference 'start'.\n"));
+		assertTrue(kse("validate", badNumber.toString()).err().endsWith(": the reference '//@nodes.0/@Children.1e999' in source does not lead to a Node\n"));
 	}
 
 	@Test

@@ -129,7 +129,7 @@ class ValidationRulesTest {
 						() -> withVariable("ball", null), () -> withVariable("ball", "behavior.Signal.FallMessage").model()),
 				new Case("NODE_TYPE: END in lower case (the original's bug)", StatechartValidator.NODE_TYPE, Diagnostic.ERROR, "0.3 (0.3)",
 						"unknown state type 'end'", () -> withEndType("end"), () -> withEndType("END").model()),
-				new Case("NODE_TYPE: no type", StatechartValidator.NODE_TYPE, Diagnostic.ERROR, "0.3 (0.3)", "unknown state type 'null'",
+				new Case("NODE_TYPE: no type", StatechartValidator.NODE_TYPE, Diagnostic.ERROR, "0.3 (0.3)", "the state has no type",
 						() -> withEndType(null), () -> withEndType("END").model()),
 				new Case("DANGLING: no target", StatechartValidator.DANGLING, Diagnostic.ERROR, "0.2->? (unnamed)", "has no target state",
 						() -> dangling(false), Models::simple),
