@@ -13,6 +13,8 @@ import java.util.Map;
 import java.util.UUID;
 
 import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EAttribute;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.eclipse.emf.ecore.resource.impl.FileURIHandlerImpl;
@@ -114,6 +116,55 @@ public final class StatechartResources {
 		}
 	}
 
+	/**
+	 * Refuses a model whose text an XML 1.0 file cannot hold (a control character pasted into a
+	 * name, a lone surrogate): EMF would write a character reference that no parser reads back,
+	 * so the saved file could never be opened again. The message names the element and the field.
+	 */
+	public static void checkWritable(Model model) throws IOException {
+		for (var it = org.eclipse.emf.ecore.util.EcoreUtil.<EObject>getAllProperContents(java.util.List.of(model), false); it.hasNext();) {
+			EObject element = it.next();
+			for (EAttribute attribute : element.eClass().getEAllAttributes()) {
+				if (element.eGet(attribute) instanceof String text) {
+					int bad = unwritable(text);
+					if (bad >= 0) {
+						throw new IOException("cannot save: the " + attribute.getName() + " of " + describe(element) + " holds the character U+"
+								+ String.format("%04X", (int) text.charAt(bad)) + " at position " + (bad + 1) + ", which a model file cannot hold");
+					}
+				}
+			}
+		}
+	}
+
+	/** The index of the first character XML 1.0 cannot hold, or -1. */
+	private static int unwritable(String text) {
+		for (int i = 0; i < text.length(); i++) {
+			char c = text.charAt(i);
+			boolean allowed = c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c <= 0xD7FF) || (c >= 0xE000 && c <= 0xFFFD);
+			if (Character.isHighSurrogate(c) && i + 1 < text.length() && Character.isLowSurrogate(text.charAt(i + 1))) {
+				i++;
+				continue;
+			}
+			if (!allowed) {
+				return i;
+			}
+		}
+		return -1;
+	}
+
+	private static String describe(EObject element) {
+		if (element instanceof org.kse.model.statechart.Node node) {
+			return "state " + (node.getLabel() == null ? "" : node.getLabel() + " ") + "(" + node.getName() + ")";
+		}
+		if (element instanceof org.kse.model.statechart.Transition transition) {
+			return "transition " + transition.getName();
+		}
+		if (element instanceof org.kse.model.statechart.Variable variable) {
+			return "variable " + variable.getName();
+		}
+		return element instanceof Model model ? "model " + model.getName() : element.eClass().getName();
+	}
+
 	/** Puts a model into a new resource for {@code file}; call {@link #save} to write it. */
 	public static Resource attach(Model model, Path file) {
 		Resource resource = newResourceSet().createResource(URI.createFileURI(file.toAbsolutePath().toString()));
@@ -127,6 +178,7 @@ public final class StatechartResources {
 		if (resource == null) {
 			throw new IOException("the model is not attached to a file");
 		}
+		checkWritable(model);
 		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
 		resource.save(bytes, saveOptions());
 		Path target = Path.of(resource.getURI().toFileString());
@@ -143,6 +195,7 @@ public final class StatechartResources {
 
 	/** Serializes a model as the bytes its file would hold, leaving the model where it was. */
 	public static byte[] toBytes(Model model) throws IOException {
+		checkWritable(model);
 		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
 		if (model.eResource() != null) {
 			model.eResource().save(bytes, saveOptions());

@@ -49,6 +49,10 @@ public class StatechartValidator implements EValidator {
 	public static final int DUPLICATE_LABEL = 14;
 	public static final int MESSAGE = 15;
 	public static final int EVENT = 16;
+	public static final int DEPTH = 17;
+
+	/** KSE's limit on nesting, far above any behaviour (the Goalie nests 7 levels): the engine and the generated code recurse over it. */
+	public static final int MAX_DEPTH = 1_000;
 
 	/** Context key: the {@link MessageCatalog} to check messages against (the standard one when absent). */
 	public static final Object CATALOG = MessageCatalog.class;
@@ -87,6 +91,18 @@ public class StatechartValidator implements EValidator {
 		if (!model.getNodes().isEmpty() && !NodeKind.OR.is(model.getNodes().get(0))) {
 			error(diagnostics, ROOT, model.getNodes().get(0), "the root state must be an OR state, not "
 					+ (model.getNodes().get(0).getType() == null ? "a state without a type" : model.getNodes().get(0).getType()));
+		}
+		for (var it = model.eAllContents(); it.hasNext();) {
+			if (it.next() instanceof Node node && node.getChildren().isEmpty()) {
+				int depth = 0;
+				for (EObject level = node; level instanceof Node; level = level.eContainer()) {
+					depth++;
+				}
+				if (depth > MAX_DEPTH) {
+					error(diagnostics, DEPTH, node, "the state is nested " + depth + " levels deep; KSE's limit is " + MAX_DEPTH);
+					return;
+				}
+			}
 		}
 	}
 

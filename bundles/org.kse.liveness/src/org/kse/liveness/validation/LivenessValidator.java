@@ -47,6 +47,12 @@ public class LivenessValidator extends AbstractLivenessValidator {
 	public static final String DUPLICATE_CHOICE = "kse.liveness.duplicateChoice";
 	public static final String BAD_COUNT = "kse.liveness.badCount";
 	public static final String AND_ROOT = "kse.liveness.andRoot";
+	public static final String TOO_LARGE = "kse.liveness.tooLarge";
+
+	/** KSE's limits, far above any behaviour (a team has five robots; the Goalie has 48 states): beyond them a formula is refused, not run out of memory. */
+	public static final int MAX_COPIES = 10_000;
+	public static final long MAX_STATES = 100_000;
+	public static final int MAX_DEPTH = 1_000;
 
 	@Check
 	public void checkHasFormula(FormulaFile file) {
@@ -87,6 +93,9 @@ public class LivenessValidator extends AbstractLivenessValidator {
 		boolean written = !count.isEmpty() && count.get(0).getSyntaxErrorMessage() == null;
 		if (written && replication.getCount() < 1) {
 			error("|x~|n needs n of at least 1", Literals.REPLICATION__COUNT, BAD_COUNT);
+		}
+		if (written && replication.getCount() > MAX_COPIES) {
+			error("|x~|n makes at most " + String.format(Locale.ROOT, "%,d", MAX_COPIES) + " copies (KSE's limit)", Literals.REPLICATION__COUNT, BAD_COUNT);
 		}
 	}
 
@@ -177,7 +186,7 @@ public class LivenessValidator extends AbstractLivenessValidator {
 	public void checkAndRoot(FormulaFile file) {
 		Formula root = Formulas.rootDefinition(file);
 		Replication replication = root == null || root.getName() == null ? null : Formulas.loneReplication(root.getExpression());
-		if (replication != null) {
+		if (replication != null && replication.getCount() >= 1) {
 			String name = root.getName();
 			String copies = name + "Copies";
 			warning("'" + name + "' is only " + Formulas.text(replication) + ", so the root becomes its AND state, as in the original tool, "
@@ -211,6 +220,100 @@ public class LivenessValidator extends AbstractLivenessValidator {
 						Literals.FORMULA__NAME, UNUSED_CAPABILITY);
 			}
 		}
+	}
+
+	/** How many states a capability becomes, and how deeply they nest, both capped so that nothing overflows. */
+	private record Extent(long states, int depth) {
+		static final Extent ONE = new Extent(1, 1);
+
+		Extent plus(Extent other) {
+			return new Extent(Math.min(states + other.states, Long.MAX_VALUE / 4), Math.max(depth, other.depth));
+		}
+
+		Extent wrapped(int extraStates, int extraDepth) {
+			return new Extent(Math.min(states + extraStates, Long.MAX_VALUE / 4), Math.min(depth + extraDepth, Integer.MAX_VALUE / 4));
+		}
+
+		Extent times(int copies) {
+			return new Extent(states > Long.MAX_VALUE / 4 / Math.max(copies, 1) ? Long.MAX_VALUE / 4 : states * copies, depth);
+		}
+	}
+
+	/**
+	 * A formula small to write can stand for a statechart too large to build (|x~|10000 of a
+	 * capability that is itself |y~|10000, or ten thousand definitions each nesting the next):
+	 * refused at the first capability that passes a limit, instead of running out of memory.
+	 * Capabilities are measured in dependency order without recursion across definitions, so a
+	 * long chain cannot overflow the stack; the count is an estimate of the transformation's.
+	 */
+	@Check
+	public void checkSize(FormulaFile file) {
+		Map<String, Formula> capabilities = Formulas.capabilities(file);
+		Map<String, Extent> measured = new HashMap<>();
+		for (String start : capabilities.keySet()) {
+			Deque<String> pending = new ArrayDeque<>();
+			Set<String> waiting = new HashSet<>();
+			pending.push(start);
+			waiting.add(start);
+			while (!pending.isEmpty()) {
+				String name = pending.peek();
+				if (measured.containsKey(name)) {
+					waiting.remove(pending.pop());
+					continue;
+				}
+				boolean ready = true;
+				for (Reference reference : Formulas.references(capabilities.get(name).getExpression())) {
+					String used = reference.getName();
+					if (capabilities.containsKey(used) && !measured.containsKey(used)) {
+						if (!waiting.add(used)) {
+							return; // a cycle: checkRecursion reports it, and it has no size
+						}
+						pending.push(used);
+						ready = false;
+					}
+				}
+				if (!ready) {
+					continue;
+				}
+				waiting.remove(pending.pop());
+				Formula formula = capabilities.get(name);
+				Extent extent = extent(formula.getExpression(), capabilities, measured).wrapped(2, 1);
+				measured.put(name, extent);
+				String problem = extent.states() > MAX_STATES ? "becomes more than " + String.format(Locale.ROOT, "%,d", MAX_STATES) + " states"
+						: extent.depth() > MAX_DEPTH ? "nests states more than " + String.format(Locale.ROOT, "%,d", MAX_DEPTH) + " levels deep" : null;
+				if (problem != null) {
+					error("'" + name + "' " + problem + " (KSE's limit): split the behaviour, or use fewer copies", formula, Literals.FORMULA__NAME, TOO_LARGE);
+					return;
+				}
+			}
+		}
+	}
+
+	private static Extent extent(Expression expression, Map<String, Formula> capabilities, Map<String, Extent> measured) {
+		if (expression == null) {
+			return Extent.ONE;
+		}
+		boolean parallel = Formulas.operator(expression) == Operator.PARALLEL;
+		Extent sum = new Extent(0, 0);
+		for (Term term : expression.getTerms()) {
+			Extent part = extent(term, capabilities, measured);
+			sum = sum.plus(parallel ? part.wrapped(2, 1) : part);
+		}
+		return parallel ? sum.wrapped(1, 1) : sum.wrapped(2, 0);
+	}
+
+	private static Extent extent(Term term, Map<String, Formula> capabilities, Map<String, Extent> measured) {
+		return switch (term) {
+			case Reference reference -> capabilities.containsKey(reference.getName())
+					? measured.getOrDefault(reference.getName(), Extent.ONE) // a cycle, reported by checkRecursion
+					: Extent.ONE;
+			case Group group -> extent(group.getExpression(), capabilities, measured).wrapped(1, 1);
+			case Option option -> extent(option.getExpression(), capabilities, measured).wrapped(3, 1);
+			case Replication replication -> extent(replication.getOperand(), capabilities, measured).wrapped(2, 1)
+					.times(Math.max(replication.getCount(), 1)).wrapped(1, 1);
+			case org.kse.liveness.liveness.Repetition repetition -> extent(repetition.getOperand(), capabilities, measured).wrapped(3, 1);
+			default -> Extent.ONE;
+		};
 	}
 
 	/**

@@ -465,6 +465,37 @@ class LivenessGrammarTest {
 		assertOnlyError(result.issues(), LivenessValidator.BAD_COUNT, 1, 9);
 	}
 
+	/** Issue 13: explicit limits, far above real models, instead of running out of memory. */
+	@Test
+	void replicationOfMoreThanTenThousandCopiesIsAnError() {
+		FormulaLoader.Result result = load("a = x\nx = |B~|10001");
+		assertOnlyError(result.issues(), LivenessValidator.BAD_COUNT, 2, 9);
+		assertTrue(Issues.errors(result.issues()).get(0).getMessage().contains("at most 10,000 copies"), () -> describe(result.issues()));
+		assertFalse(load("a = x\nx = |B~|10000").hasErrors());
+	}
+
+	@Test
+	void aFormulaThatBecomesMoreThanTheStateLimitIsRefusedAtTheCapability() {
+		FormulaLoader.Result result = load("team = players\nplayers = |player~|1000\nplayer = |B~|1000");
+		assertOnlyError(result.issues(), LivenessValidator.TOO_LARGE, 2, 1);
+		assertTrue(Issues.errors(result.issues()).get(0).getMessage().startsWith("'players' becomes more than 100,000 states (KSE's limit)"),
+				() -> describe(result.issues()));
+		assertFalse(load("team = players\nplayers = |player~|100\nplayer = |B~|100").hasErrors());
+	}
+
+	@Test
+	void aChainOfTenThousandDefinitionsIsRefusedForItsDepth() {
+		StringBuilder text = new StringBuilder();
+		for (int i = 0; i < 10_000; i++) {
+			text.append("d").append(i).append(" = d").append(i + 1).append(" . A\n");
+		}
+		text.append("d10000 = B\n");
+		FormulaLoader.Result result = load(text.toString());
+		List<Issue> errors = Issues.errors(result.issues());
+		assertEquals(1, errors.size(), () -> describe(result.issues()));
+		assertTrue(errors.get(0).getMessage().contains("nests states more than 1,000 levels deep (KSE's limit)"), () -> describe(result.issues()));
+	}
+
 	@Test
 	void replicationCountTooLargeForAnIntIsAnErrorAtTheCount() {
 		FormulaLoader.Result result = load("a = |B~|99999999999");
