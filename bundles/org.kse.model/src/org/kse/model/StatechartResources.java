@@ -216,7 +216,13 @@ public final class StatechartResources {
 	 * permissions any new file gets (the umask applies); an existing file keeps its own.
 	 */
 	public static void writeAtomically(Path target, byte[] content) throws IOException {
+		if (Files.isDirectory(target)) {
+			throw new IOException(target + ": is a folder; give the name of a file to write");
+		}
 		Path directory = target.toAbsolutePath().getParent();
+		if (Files.exists(directory) && !Files.isDirectory(directory)) {
+			throw new IOException(directory + ": not a folder, so " + target.getFileName() + " cannot be written in it");
+		}
 		Files.createDirectories(directory);
 		Path temporary = directory.resolve("." + target.getFileName() + "." + UUID.randomUUID() + ".tmp");
 		try {

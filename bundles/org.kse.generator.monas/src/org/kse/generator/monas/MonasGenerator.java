@@ -96,6 +96,9 @@ public final class MonasGenerator {
 			throws IOException, ModelHasErrorsException {
 		progress.step(1, 3, "validating " + model.getName());
 		Path root = sourceFolder.toAbsolutePath().normalize();
+		if (Files.exists(root) && !Files.isDirectory(root)) {
+			throw new IOException(sourceFolder + ": not a folder (generate writes into a source folder)");
+		}
 		List<Path> messageFolders = new ArrayList<>(options.messageFolders());
 		messageFolders.add(root.resolve(MESSAGES_FOLDER));
 		StandardMessages.Merged messages = StandardMessages.merge(messageFolders);

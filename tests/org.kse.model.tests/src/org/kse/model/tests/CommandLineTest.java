@@ -526,6 +526,24 @@ class CommandLineTest {
 		}
 	}
 
+	/** Issue 13, item 9: an output that is a folder, or a source folder that is a file, used to give Java's "Is a directory". */
+	@Test
+	void anOutputThatIsNotWhatTheCommandWritesIsNamed() throws IOException {
+		Path goalie = Models.LEGACY.resolve("Goalie/Goalie.stct");
+		Path folder = Files.createDirectories(directory.resolve("pictures"));
+		Run diagram = kse("diagram", goalie.toString(), "-o", folder.toString());
+		assertEquals(Kse.FAILED, diagram.code(), diagram::all);
+		assertEquals("kse: " + folder + ": is a folder; give the name of a file to write\n", diagram.err(), diagram::all);
+		Path file = Files.writeString(directory.resolve("notes.txt"), "mine");
+		Run generate = kse("generate", "-q", goalie.toString(), file.toString());
+		assertEquals(Kse.FAILED, generate.code(), generate::all);
+		assertTrue(generate.err().endsWith("kse: " + file + ": not a folder (generate writes into a source folder)\n"), generate::all);
+		Run label = kse("label", goalie.toString(), "-o", file.resolve("Goalie.stct").toString());
+		assertEquals(Kse.FAILED, label.code(), label::all);
+		assertTrue(label.err().endsWith("kse: " + file + ": not a folder, so Goalie.stct cannot be written in it\n"), label::all);
+		assertEquals("mine", Files.readString(file));
+	}
+
 	/** Issue 13, item 3: a .proto that is not UTF-8 in the source tree used to end the command with exit 0 and no word. */
 	@Test
 	void aSourceTreeFileThatIsNotTextIsNamedAndTheCommandFails() throws IOException {
