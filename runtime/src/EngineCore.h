@@ -2,7 +2,9 @@
 #define KSE_RUNTIME_SRC_ENGINE_CORE_H
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -12,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "Watchdog.h"
 #include "WorkerPool.h"
 #include "kse/messaging/Blackboard.h"
 #include "kse/messaging/MessageHub.h"
@@ -34,9 +37,31 @@ class EngineCore {
   bool RunUntilStable(std::size_t max_transitions);
   void Start();
   void Stop();
-  /// Stop(), join the worker pool.
-  void Shutdown();
+  /// Stop(), then join the worker pool. True when calls still run (Stop() abandoned them): the
+  /// core must then be kept (KeepAbandoned), since they come back to it when they return.
+  bool Shutdown();
   void Wake();
+
+  // Reporting and the watchdog
+  void Report(EngineReport::Kind kind, std::string text) const;
+  /// To the reporter, or to standard error once the statechart is destroyed (the reporter may
+  /// refer to what went with it) or when there is none.
+  void Deliver(const EngineReport& report) const { Deliver(report, !abandoned_.load()); }
+  void Deliver(const EngineReport& report, bool to_reporter) const;
+  void SetReporter(Reporter reporter);
+  void SetWatchdogLimit(std::chrono::milliseconds limit);
+  std::chrono::milliseconds WatchdogLimit() const noexcept {
+    return std::chrono::milliseconds(watchdog_limit_ms_.load(std::memory_order_relaxed));
+  }
+  void SetActivityWatchdogLimit(const std::string& activity, std::chrono::milliseconds limit);
+  /// The shortest limit of any slot (zero when none is watched), for the watchdog's period.
+  std::chrono::milliseconds ShortestWatchdogLimit() const noexcept;
+  /// The watchdog's look at every slot: reports overruns and the end of reported ones.
+  void Inspect(std::chrono::steady_clock::time_point now,
+               const std::function<void(EngineReport)>& report);
+  /// A core whose calls were abandoned, kept until the process ends (reachable, so that leak
+  /// checkers do not count it).
+  static void KeepAbandoned(std::unique_ptr<EngineCore> core);
 
   std::vector<std::string> ActiveStates() const;
   std::vector<State*> States() const;
@@ -59,6 +84,7 @@ class EngineCore {
   std::atomic<std::size_t> transitions_taken_{0};
   std::atomic<std::size_t> step_number_{0};
   std::atomic<std::size_t> running_activities_{0};
+  std::atomic<std::size_t> overruns_{0};
 
  private:
   // Structure (Activate)
@@ -95,12 +121,33 @@ class EngineCore {
   bool TakeWake();
   /// Steps until nothing fires or the bound is reached (then false, with a warning).
   bool StepUntilQuiet(std::size_t max_transitions, std::size_t first);
-  void Loop();
-  void WaitForActivities();
+  void Loop(std::uint64_t generation);
+  bool Retired(std::uint64_t generation) const noexcept {
+    return loop_generation_.load(std::memory_order_acquire) != generation;
+  }
+  /// After a call into user code on the engine's thread: when this is an engine thread Stop()
+  /// gave up on, unwinds the step (the statechart may have been destroyed meanwhile, and the
+  /// rest of the step would touch its freed states; alive, it has another engine thread).
+  void UnwindIfGivenUp() const {
+    if (given_up_generation_.load(std::memory_order_relaxed) != 0) UnwindIfThisThreadWasGivenUp();
+  }
+  void UnwindIfThisThreadWasGivenUp() const;
 
-  void Report(const std::string& what) const;
+  // Watchdog
+  /// An inline activity runs on the engine's thread: its slot, always in the cache.
+  CallSlot& SlotOf(const BasicState* state) noexcept {
+    return pool_ ? activity_slots_[state->watch_slot_] : engine_slot_;
+  }
+  std::string DescribeCall(CallKind kind, const void* subject) const;
+  /// The call running in a slot now: false when none (or calls come and go too fast to say).
+  bool ReadCall(const CallSlot& slot, CallKind& kind, const void*& subject) const noexcept;
+  /// The same, described; "" when none.
+  std::string CurrentCall(const CallSlot& slot) const;
+  std::int64_t LimitOf(CallKind kind, const void* subject) const noexcept;
+  void ApplyActivityLimits();
 
   Statechart& chart_;
+  const std::string chart_name_;  // for reports after the statechart is gone
   std::vector<std::unique_ptr<State>> owned_states_;
   std::vector<std::unique_ptr<TransitionSegmentBase>> owned_transitions_;  // model order
 
@@ -120,11 +167,28 @@ class EngineCore {
   std::condition_variable wake_cv_;
   std::uint64_t wake_generation_ = 0;  // any change: a wake, an activity's end, Stop()
   bool woken_ = false;                 // a reason to re-evaluate
-  bool stop_requested_ = false;
+  std::vector<std::uint64_t> live_loops_;  // generations of engine threads not ended yet
+  std::atomic<bool> abandoned_{false};     // destroyed while calls still ran (set under wake_mutex_)
 
   std::mutex control_mutex_;  // serialises Start/Stop/Shutdown
   std::thread thread_;
+  std::atomic<std::uint64_t> loop_generation_{0};  // the engine thread that may run; Stop() retires it
+  std::atomic<std::uint64_t> given_up_generation_{0};  // engine threads up to it unwind after their call
   std::atomic<bool> started_{false};
+
+  // Reports and the watchdog
+  mutable std::mutex reporter_mutex_;
+  std::shared_ptr<const Reporter> reporter_;  // null: standard error
+  CallSlot engine_slot_;  // guards, actions, entry/exit hooks, UserInit, the observer
+  std::unique_ptr<CallSlot[]> activity_slots_;  // by activity, for a worker pool
+  std::unique_ptr<std::atomic<std::int64_t>[]> activity_limits_ms_;  // by activity, -1: the statechart's
+  std::size_t activity_slot_count_ = 0;
+  std::vector<const BasicState*> slot_states_;  // by slot
+  std::vector<std::string> activity_names_;     // by slot, asked once at Activate
+  std::atomic<std::int64_t> watchdog_limit_ms_;
+  std::mutex limits_mutex_;
+  std::vector<std::pair<std::string, std::chrono::milliseconds>> activity_limits_;
+  bool watched_ = false;
 };
 
 }  // namespace statechart_engine::detail

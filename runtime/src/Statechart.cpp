@@ -1,6 +1,7 @@
 #include "statechart_engine/Statechart.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <limits>
@@ -41,10 +42,48 @@ void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
 
 std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
 
+// For the watchdog and Stop(): the model's label too, which is what a modeller sees.
+std::string DescribeLabelled(const State* state) {
+  if (state->Label() == state->Name()) return "state '" + state->Name() + "'";
+  return "state " + state->Label() + " '" + state->Name() + "'";
+}
+
+std::string DescribeTransition(const TransitionSegmentBase* transition) {
+  return "transition '" + transition->Name() + "' (" + transition->Source()->Label() + " -> " +
+         transition->Target()->Label() + ")";
+}
+
+// "250 ms", "1.3 s": a watchdog limit is often below a second, a hang seldom.
+std::string Seconds(std::chrono::steady_clock::duration duration) {
+  char text[32];
+  const double seconds = std::chrono::duration<double>(duration).count();
+  if (seconds < 1) {
+    std::snprintf(text, sizeof text, "%.0f ms", seconds * 1000);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f s", seconds);
+  }
+  return text;
+}
+
+// Unwinds a step whose engine thread Stop() gave up on, once its call returns.
+struct GivenUp {};
+
+// Which engine thread this is, for GivenUp: only that thread unwinds, not a caller of
+// RunUntilStable() on another thread.
+thread_local const EngineCore* current_loop_core = nullptr;
+thread_local std::uint64_t current_loop_generation = 0;
+
 }  // namespace
 
 EngineCore::EngineCore(Statechart& chart, kse::messaging::MessageHub& hub, Options options)
-    : hub_(hub), options_(options), root_blackboard_(hub, chart.Name()), chart_(chart) {}
+    : hub_(hub),
+      options_(std::move(options)),
+      root_blackboard_(hub, chart.Name()),
+      chart_(chart),
+      chart_name_(chart.Name()),
+      watchdog_limit_ms_(std::max<std::int64_t>(0, options_.watchdog_limit.count())) {
+  if (options_.reporter) reporter_ = std::make_shared<const Reporter>(options_.reporter);
+}
 
 EngineCore::~EngineCore() {
   Shutdown();
@@ -56,10 +95,197 @@ EngineCore::~EngineCore() {
   }
 }
 
-void EngineCore::Report(const std::string& what) const {
-  std::ostringstream line;
-  line << "[kse] statechart '" << chart_.Name() << "': " << what << '\n';
-  std::cerr << line.str() << std::flush;
+// ---------------------------------------------------------------------------------------------
+// Reports and the watchdog
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::Report(EngineReport::Kind kind, std::string text) const {
+  EngineReport report;
+  report.kind = kind;
+  report.chart = chart_name_;
+  report.text = std::move(text);
+  Deliver(report);
+}
+
+void EngineCore::Deliver(const EngineReport& report, bool to_reporter) const {
+  std::shared_ptr<const Reporter> reporter;
+  if (to_reporter) {
+    std::lock_guard<std::mutex> lock(reporter_mutex_);
+    reporter = reporter_;
+  }
+  if (reporter) {
+    try {
+      (*reporter)(report);
+      return;
+    } catch (...) {
+      // a reporter that throws loses nothing: the report goes to standard error
+    }
+  }
+  std::cerr << ToString(report) + '\n' << std::flush;
+}
+
+void EngineCore::SetReporter(Reporter reporter) {
+  auto shared = reporter ? std::make_shared<const Reporter>(std::move(reporter)) : nullptr;
+  std::lock_guard<std::mutex> lock(reporter_mutex_);
+  reporter_ = std::move(shared);
+}
+
+void EngineCore::SetWatchdogLimit(std::chrono::milliseconds limit) {
+  watchdog_limit_ms_.store(std::max<std::int64_t>(0, limit.count()), std::memory_order_relaxed);
+  Watchdog::Instance().LimitsChanged();
+}
+
+void EngineCore::SetActivityWatchdogLimit(const std::string& activity,
+                                          std::chrono::milliseconds limit) {
+  {
+    std::lock_guard<std::mutex> lock(limits_mutex_);
+    auto found = std::find_if(activity_limits_.begin(), activity_limits_.end(),
+                              [&](const auto& entry) { return entry.first == activity; });
+    if (found != activity_limits_.end()) {
+      found->second = limit;
+    } else {
+      activity_limits_.emplace_back(activity, limit);
+    }
+  }
+  if (IsActivated()) ApplyActivityLimits();
+  Watchdog::Instance().LimitsChanged();
+}
+
+void EngineCore::ApplyActivityLimits() {
+  std::lock_guard<std::mutex> lock(limits_mutex_);
+  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) {
+    for (const auto& [activity, limit] : activity_limits_) {
+      if (activity_names_[slot] == activity) {
+        activity_limits_ms_[slot].store(std::max<std::int64_t>(0, limit.count()),
+                                        std::memory_order_relaxed);
+      }
+    }
+  }
+}
+
+std::chrono::milliseconds EngineCore::ShortestWatchdogLimit() const noexcept {
+  std::int64_t shortest = watchdog_limit_ms_.load(std::memory_order_relaxed);
+  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) {
+    const std::int64_t own = activity_limits_ms_[slot].load(std::memory_order_relaxed);
+    if (own > 0 && (shortest == 0 || own < shortest)) shortest = own;
+  }
+  return std::chrono::milliseconds(shortest);
+}
+
+std::int64_t EngineCore::LimitOf(CallKind kind, const void* subject) const noexcept {
+  if (kind == CallKind::Activity) {
+    const auto* state = static_cast<const BasicState*>(subject);
+    const std::int64_t own = activity_limits_ms_[state->watch_slot_].load(std::memory_order_relaxed);
+    if (own >= 0) return own;
+  }
+  return watchdog_limit_ms_.load(std::memory_order_relaxed);
+}
+
+std::string EngineCore::DescribeCall(CallKind kind, const void* subject) const {
+  const auto* state = static_cast<const State*>(subject);
+  const auto* transition = static_cast<const TransitionSegmentBase*>(subject);
+  switch (kind) {
+    case CallKind::Activity:
+    case CallKind::ActivityInit: {
+      const auto* basic = static_cast<const BasicState*>(state);
+      return std::string(kind == CallKind::ActivityInit ? "UserInit of activity '" : "activity '") +
+             activity_names_[basic->watch_slot_] + "' of " + DescribeLabelled(state);
+    }
+    case CallKind::Guard:
+      return "guard of " + DescribeTransition(transition);
+    case CallKind::GuardInit:
+      return "UserInit of the guard of " + DescribeTransition(transition);
+    case CallKind::Action:
+      return "action of " + DescribeTransition(transition);
+    case CallKind::ActionInit:
+      return "UserInit of the action of " + DescribeTransition(transition);
+    case CallKind::Entry:
+      return "OnEntry of " + DescribeLabelled(state);
+    case CallKind::Exit:
+      return "OnExit of " + DescribeLabelled(state);
+    case CallKind::Observer:
+      return "observer of " + DescribeTransition(transition);
+  }
+  return "?";
+}
+
+bool EngineCore::ReadCall(const CallSlot& slot, CallKind& kind, const void*& subject) const noexcept {
+  // A seqlock read: what the slot says is the call of the sequence number read before and after.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const std::uint64_t before = slot.sequence.load(std::memory_order_acquire);
+    if ((before & 1U) == 0) return false;
+    // acquire: the sequence is read again only after these (no fence: ThreadSanitizer has none)
+    kind = slot.kind.load(std::memory_order_acquire);
+    subject = slot.subject.load(std::memory_order_acquire);
+    if (slot.sequence.load(std::memory_order_relaxed) == before) return true;
+  }
+  return false;  // calls come and go too fast: nothing hangs here
+}
+
+std::string EngineCore::CurrentCall(const CallSlot& slot) const {
+  CallKind kind;
+  const void* subject;
+  return ReadCall(slot, kind, subject) ? DescribeCall(kind, subject) : std::string();
+}
+
+void EngineCore::Inspect(std::chrono::steady_clock::time_point now,
+                         const std::function<void(EngineReport)>& report) {
+  auto look = [&](CallSlot& slot) {
+    const std::uint64_t sequence = slot.sequence.load(std::memory_order_acquire);
+    if (sequence != slot.seen) {
+      if (slot.overrun != 0) {
+        EngineReport ended;
+        ended.kind = EngineReport::Kind::OverrunEnded;
+        ended.chart = chart_name_;
+        ended.overrun = slot.overrun;
+        ended.running = std::chrono::duration_cast<std::chrono::milliseconds>(now - slot.since);
+        ended.call = std::move(slot.call);
+        ended.text = ended.call + " returned after about " + Seconds(now - slot.since);
+        report(std::move(ended));
+        slot.overrun = 0;
+        slot.call.clear();
+      }
+      slot.seen = sequence;
+      slot.since = now;
+      return;
+    }
+    if ((sequence & 1U) == 0 || slot.overrun != 0) return;
+    CallKind kind;
+    const void* subject;
+    if (!ReadCall(slot, kind, subject)) return;
+    const std::int64_t limit = LimitOf(kind, subject);
+    if (limit <= 0 || now - slot.since < std::chrono::milliseconds(limit)) return;
+    const std::string call = DescribeCall(kind, subject);
+    slot.overrun = Watchdog::NextOverrunId();
+    overruns_.fetch_add(1, std::memory_order_relaxed);
+    EngineReport overrun;
+    overrun.kind = EngineReport::Kind::Overrun;
+    overrun.chart = chart_name_;
+    overrun.overrun = slot.overrun;
+    overrun.running = std::chrono::duration_cast<std::chrono::milliseconds>(now - slot.since);
+    overrun.text = call + " has been running for " + Seconds(now - slot.since) +
+                   " (watchdog limit " + Seconds(std::chrono::milliseconds(limit)) +
+                   "); it is still running";
+    overrun.call = call;
+    slot.call = call;
+    report(std::move(overrun));
+  };
+  look(engine_slot_);
+  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) look(activity_slots_[slot]);
+}
+
+void EngineCore::UnwindIfThisThreadWasGivenUp() const {
+  const std::uint64_t given_up = given_up_generation_.load();
+  if (given_up != 0 && current_loop_core == this && current_loop_generation <= given_up) {
+    throw GivenUp{};
+  }
+}
+
+void EngineCore::KeepAbandoned(std::unique_ptr<EngineCore> core) {
+  static std::mutex mutex;
+  static auto* const kept = new std::vector<std::unique_ptr<EngineCore>>();
+  std::lock_guard<std::mutex> lock(mutex);
+  kept->push_back(std::move(core));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -266,6 +492,30 @@ void EngineCore::Prepare() {
   for (const auto& transition : owned_transitions_) {
     ComputeTransition(*transition);
   }
+
+  // One watchdog slot per activity; its name is asked once, here, so that the watchdog never
+  // calls user code.
+  slot_states_.clear();
+  activity_names_.clear();
+  for (State* state : states_) {
+    if (state->kind_ != StateKind::Basic) continue;
+    auto* basic = static_cast<BasicState*>(state);
+    basic->watch_slot_ = slot_states_.size();
+    slot_states_.push_back(basic);
+    std::string name = "?";
+    if (basic->activity_) {
+      try {
+        name = basic->activity_->GetName();
+      } catch (...) {
+      }
+    }
+    activity_names_.push_back(std::move(name));
+  }
+  activity_slot_count_ = slot_states_.size();
+  activity_slots_ = std::make_unique<CallSlot[]>(std::max<std::size_t>(1, activity_slot_count_));
+  activity_limits_ms_ =
+      std::make_unique<std::atomic<std::int64_t>[]>(std::max<std::size_t>(1, activity_slot_count_));
+  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) activity_limits_ms_[slot] = -1;
 }
 
 void EngineCore::CallUserInits() {
@@ -274,46 +524,61 @@ void EngineCore::CallUserInits() {
     IActivity* activity = static_cast<BasicState*>(state)->activity_.get();
     if (activity == nullptr) continue;
     try {
+      WatchedCall watched(engine_slot_, CallKind::ActivityInit, state);
       activity->UserInit();
     } catch (const std::exception& e) {
       ++activity_failures_;
-      Report("UserInit of the activity of state " + Describe(state) + " threw: " + e.what());
+      Report(EngineReport::Kind::Failure,
+             "UserInit of the activity of state " + Describe(state) + " threw: " + e.what());
     } catch (...) {
       ++activity_failures_;
-      Report("UserInit of the activity of state " + Describe(state) + " threw");
+      Report(EngineReport::Kind::Failure,
+             "UserInit of the activity of state " + Describe(state) + " threw");
     }
   }
   for (const auto& transition : owned_transitions_) {
     try {
+      WatchedCall watched(engine_slot_, CallKind::GuardInit, transition.get());
       if (transition->condition_) transition->condition_->UserInit();
     } catch (const std::exception& e) {
       ++guard_failures_;
-      Report("UserInit of the guard of '" + transition->Name() + "' threw: " + e.what());
+      Report(EngineReport::Kind::Failure,
+             "UserInit of the guard of '" + transition->Name() + "' threw: " + e.what());
     } catch (...) {
       ++guard_failures_;
-      Report("UserInit of the guard of '" + transition->Name() + "' threw");
+      Report(EngineReport::Kind::Failure,
+             "UserInit of the guard of '" + transition->Name() + "' threw");
     }
     try {
+      WatchedCall watched(engine_slot_, CallKind::ActionInit, transition.get());
       if (transition->action_) transition->action_->UserInit();
     } catch (const std::exception& e) {
       ++action_failures_;
-      Report("UserInit of the action of '" + transition->Name() + "' threw: " + e.what());
+      Report(EngineReport::Kind::Failure,
+             "UserInit of the action of '" + transition->Name() + "' threw: " + e.what());
     } catch (...) {
       ++action_failures_;
-      Report("UserInit of the action of '" + transition->Name() + "' threw");
+      Report(EngineReport::Kind::Failure,
+             "UserInit of the action of '" + transition->Name() + "' threw");
     }
   }
 }
 
 void EngineCore::Activate() {
+  if (IsActivated()) {
+    return;  // without the lock: an engine thread stuck in a guard holds it
+  }
   std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
   if (IsActivated()) {
     return;
   }
   Prepare();
+  ApplyActivityLimits();
   if (!options_.inline_activities && options_.worker_threads > 0 && !pool_) {
     pool_ = std::make_unique<WorkerPool>(options_.worker_threads);
   }
+  Watchdog::Instance().Watch(this);
+  watched_ = true;
   CallUserInits();
   activated_.store(true, std::memory_order_release);
   EnterDefault(&chart_);
@@ -385,22 +650,28 @@ bool EngineCore::EvalGuard(TransitionSegmentBase* transition) {
   if (condition == nullptr) {
     return true;
   }
+  bool holds = false;
   try {
-    return condition->Eval();
+    WatchedCall watched(engine_slot_, CallKind::Guard, transition);
+    holds = condition->Eval();
   } catch (const std::exception& e) {
     ++guard_failures_;
-    Report("guard of '" + transition->Name() + "' threw (taken as false): " + e.what());
+    Report(EngineReport::Kind::Failure,
+           "guard of '" + transition->Name() + "' threw (taken as false): " + e.what());
   } catch (...) {
     ++guard_failures_;
-    Report("guard of '" + transition->Name() + "' threw (taken as false)");
+    Report(EngineReport::Kind::Failure,
+           "guard of '" + transition->Name() + "' threw (taken as false)");
   }
-  return false;
+  UnwindIfGivenUp();
+  return holds;
 }
 
 bool EngineCore::FindChain(State* connector, std::size_t depth) {
   if (depth >= kMaxConnectorChain) {
-    Report("condition connector chain deeper than " + std::to_string(kMaxConnectorChain) +
-           " at " + Describe(connector) + ", not taken");
+    Report(EngineReport::Kind::Warning, "condition connector chain deeper than " +
+                                            std::to_string(kMaxConnectorChain) + " at " +
+                                            Describe(connector) + ", not taken");
     return false;
   }
   for (TransitionSegmentBase* next : connector->outgoing_) {
@@ -446,28 +717,33 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
   Exit(transition->exit_top_);
   if (IAction* action = transition->action_.get()) {
     try {
+      WatchedCall watched(engine_slot_, CallKind::Action, transition);
       action->Execute();
     } catch (const std::exception& e) {
       ++action_failures_;
-      Report("action of '" + transition->Name() + "' threw: " + e.what());
+      Report(EngineReport::Kind::Failure, "action of '" + transition->Name() + "' threw: " + e.what());
     } catch (...) {
       ++action_failures_;
-      Report("action of '" + transition->Name() + "' threw");
+      Report(EngineReport::Kind::Failure, "action of '" + transition->Name() + "' threw");
     }
+    UnwindIfGivenUp();
   }
   EnterAlong(transition->entry_path_, 0);
   transitions_taken_.store(transitions_taken_.load(std::memory_order_relaxed) + 1,
                           std::memory_order_relaxed);
   if (observer_) {
     try {
+      WatchedCall watched(engine_slot_, CallKind::Observer, transition);
       observer_(*transition);
     } catch (const std::exception& e) {
       ++action_failures_;
-      Report("observer threw on '" + transition->Name() + "': " + e.what());
+      Report(EngineReport::Kind::Failure,
+             "observer threw on '" + transition->Name() + "': " + e.what());
     } catch (...) {
       ++action_failures_;
-      Report("observer threw on '" + transition->Name() + "'");
+      Report(EngineReport::Kind::Failure, "observer threw on '" + transition->Name() + "'");
     }
+    UnwindIfGivenUp();
   }
 }
 
@@ -481,14 +757,16 @@ void EngineCore::Enter(State* state) {
   }
   state->active_.store(true, std::memory_order_relaxed);
   try {
+    WatchedCall watched(engine_slot_, CallKind::Entry, state);
     state->OnEntry();
   } catch (const std::exception& e) {
     ++action_failures_;
-    Report("OnEntry of " + Describe(state) + " threw: " + e.what());
+    Report(EngineReport::Kind::Failure, "OnEntry of " + Describe(state) + " threw: " + e.what());
   } catch (...) {
     ++action_failures_;
-    Report("OnEntry of " + Describe(state) + " threw");
+    Report(EngineReport::Kind::Failure, "OnEntry of " + Describe(state) + " threw");
   }
+  UnwindIfGivenUp();
 }
 
 void EngineCore::Complete(State* state) {
@@ -548,14 +826,16 @@ void EngineCore::Exit(State* state) {
     }
   }
   try {
+    WatchedCall watched(engine_slot_, CallKind::Exit, state);
     state->OnExit();
   } catch (const std::exception& e) {
     ++action_failures_;
-    Report("OnExit of " + Describe(state) + " threw: " + e.what());
+    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw: " + e.what());
   } catch (...) {
     ++action_failures_;
-    Report("OnExit of " + Describe(state) + " threw");
+    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw");
   }
+  UnwindIfGivenUp();
   state->active_.store(false, std::memory_order_relaxed);
   if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
     AsOr(state->parent_)->active_child_ = nullptr;
@@ -573,6 +853,7 @@ void EngineCore::Launch(BasicState* state) {
   state->launches_.fetch_add(1, std::memory_order_relaxed);
   if (!pool_) {
     RunActivity(state);
+    UnwindIfGivenUp();
     return;
   }
   {
@@ -599,6 +880,7 @@ void EngineCore::RunActivity(BasicState* state) {
   const char* failure = nullptr;
   std::string message;
   try {
+    WatchedCall watched(SlotOf(state), CallKind::Activity, state);
     activity->Execute();
     return;
   } catch (const std::exception& e) {
@@ -614,14 +896,18 @@ void EngineCore::RunActivity(BasicState* state) {
   } catch (...) {
     name = "?";
   }
-  Report("activity '" + name + "' of state " + Describe(state) + " " + failure +
-         (message.empty() ? std::string() : ": " + message));
+  Report(EngineReport::Kind::Failure, "activity '" + name + "' of " + DescribeLabelled(state) +
+                                          " " + failure +
+                                          (message.empty() ? std::string() : ": " + message));
 }
 
 bool EngineCore::FinishActivity(BasicState* state) {
   bool again = false;
   {
     std::lock_guard<std::mutex> lock(wake_mutex_);
+    if (abandoned_.load(std::memory_order_relaxed)) {
+      return false;  // the statechart is gone: its region (maybe the root itself) with it
+    }
     state->region_->running_.fetch_sub(1, std::memory_order_acq_rel);
     running_activities_.fetch_sub(1, std::memory_order_acq_rel);
     if (state->relaunches_ > 0) {
@@ -635,11 +921,6 @@ bool EngineCore::FinishActivity(BasicState* state) {
   }
   wake_cv_.notify_all();
   return again;
-}
-
-void EngineCore::WaitForActivities() {
-  std::unique_lock<std::mutex> lock(wake_mutex_);
-  wake_cv_.wait(lock, [this] { return running_activities_.load(std::memory_order_acquire) == 0; });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -664,8 +945,9 @@ bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) 
   std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
   while (StepRoot()) {
     if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
-      Report("RunUntilStable stopped after " + std::to_string(max_transitions) +
-             " transitions: the statechart does not settle");
+      Report(EngineReport::Kind::Warning, "RunUntilStable stopped after " +
+                                              std::to_string(max_transitions) +
+                                              " transitions: the statechart does not settle");
       return false;
     }
   }
@@ -729,46 +1011,134 @@ void EngineCore::Start() {
   if (thread_.joinable()) {
     return;
   }
+  std::uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(wake_mutex_);
-    stop_requested_ = false;
+    generation = loop_generation_.load(std::memory_order_relaxed) + 1;
+    loop_generation_.store(generation, std::memory_order_release);
+    live_loops_.push_back(generation);
     woken_ = true;  // a (re)started engine looks at its configuration first, as Monas' did
   }
-  thread_ = std::thread([this] { Loop(); });
+  thread_ = std::thread([this, generation] { Loop(generation); });
   started_.store(true, std::memory_order_release);
 }
 
 void EngineCore::Stop() {
   std::lock_guard<std::mutex> control(control_mutex_);
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::min<std::chrono::steady_clock::duration>(
+                            std::max(options_.stop_limit, std::chrono::milliseconds(0)),
+                            std::chrono::hours(24 * 365));
+  std::vector<std::string> left;
   if (thread_.joinable()) {
+    std::uint64_t generation;
+    bool ended;
     {
-      std::lock_guard<std::mutex> lock(wake_mutex_);
-      stop_requested_ = true;
+      std::unique_lock<std::mutex> lock(wake_mutex_);
+      generation = loop_generation_.load(std::memory_order_relaxed);
+      loop_generation_.store(generation + 1, std::memory_order_release);  // retires the thread
       ++wake_generation_;
+      wake_cv_.notify_all();
+      ended = wake_cv_.wait_until(lock, deadline, [&] {
+        return std::find(live_loops_.begin(), live_loops_.end(), generation) == live_loops_.end();
+      });
+      if (!ended) {
+        // From now on the thread unwinds as soon as its call returns (UnwindIfGivenUp).
+        given_up_generation_.store(std::max(given_up_generation_.load(), generation));
+      }
     }
-    wake_cv_.notify_all();
-    thread_.join();
+    if (ended) {
+      thread_.join();
+    } else {
+      const std::string call = CurrentCall(engine_slot_);
+      left.push_back("the engine thread" + (call.empty() ? std::string() : ", in the " + call));
+      thread_.detach();
+    }
     started_.store(false, std::memory_order_release);
   }
-  WaitForActivities();
+  {
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    wake_cv_.wait_until(lock, deadline, [this] {
+      return running_activities_.load(std::memory_order_acquire) == 0;
+    });
+  }
+  if (running_activities_.load(std::memory_order_acquire) > 0) {
+    for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) {
+      if (slot_states_[slot]->IsRunning()) {
+        left.push_back(DescribeCall(CallKind::Activity, slot_states_[slot]));
+      }
+    }
+  }
+  if (!left.empty()) {
+    std::string text = "Stop() stopped waiting after " +
+                       Seconds(std::max(options_.stop_limit, std::chrono::milliseconds(0))) +
+                       " for calls that have not returned; they go on alone: ";
+    for (std::size_t i = 0; i < left.size(); ++i) text += (i ? "; " : "") + left[i];
+    Report(EngineReport::Kind::Abandoned, std::move(text));
+  }
 }
 
-void EngineCore::Shutdown() {
+bool EngineCore::Shutdown() {
+  if (abandoned_.load()) {
+    return true;
+  }
   Stop();
-  pool_.reset();
+  {
+    // An engine thread Stop() gave up on unwinds once its call returns, but it must be inside
+    // that call (not between two) when the states are freed: wait for it to be, or to end.
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    while (!live_loops_.empty() && !engine_slot_.Busy() &&
+           std::chrono::steady_clock::now() < deadline) {
+      wake_cv_.wait_for(lock, std::chrono::milliseconds(1));
+    }
+  }
+  if (watched_) {
+    Watchdog::Instance().Unwatch(this);
+    watched_ = false;
+  }
+  bool abandon;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    abandon = !live_loops_.empty() || running_activities_.load(std::memory_order_acquire) > 0;
+    if (abandon) abandoned_.store(true);
+  }
+  if (!abandon) {
+    pool_.reset();
+    return false;
+  }
+  const std::size_t activities = running_activities_.load();
+  std::size_t threads;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    threads = live_loops_.size();
+  }
+  if (pool_) pool_->Close(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
+  EngineReport report;
+  report.kind = EngineReport::Kind::Abandoned;
+  report.chart = chart_name_;
+  report.text = "destroyed while " + std::to_string(activities) + " activit" +
+                (activities == 1 ? "y" : "ies") + " and " + std::to_string(threads) +
+                " engine thread" + (threads == 1 ? "" : "s") +
+                " still ran; the engine's own objects are kept for them to return to";
+  // The reporter still belongs to the caller here (it is destroying the statechart now).
+  Deliver(report, true);
+  return true;
 }
 
 // Monas' engine thread: `while (Step());`, then sleep until an activity returns or a timeout
 // worker wakes it. Waking more often (Wake(), the periodic look at the clock) changes nothing:
 // without a reason the engine does not step.
-void EngineCore::Loop() {
+void EngineCore::Loop(std::uint64_t generation) {
+  current_loop_core = this;
+  current_loop_generation = generation;
   const kse::messaging::Clock& clock = hub_.GetClock();
   for (;;) {
     std::uint64_t seen;
     {
       std::lock_guard<std::mutex> lock(wake_mutex_);
-      if (stop_requested_) {
-        return;
+      if (Retired(generation)) {
+        break;
       }
       seen = wake_generation_;
     }
@@ -778,7 +1148,7 @@ void EngineCore::Loop() {
         std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
         std::size_t steps = 0;
         bool more = false;
-        while (StepRoot()) {
+        while (!Retired(generation) && StepRoot()) {
           if (++steps >= kStepsPerBatch) {
             more = true;  // look at Stop() between batches, then go on
             break;
@@ -791,13 +1161,15 @@ void EngineCore::Loop() {
         }
       }
       wakeup = NextWakeup();
+    } catch (const GivenUp&) {
+      break;  // the step is cut short: what it would touch may be freed
     } catch (const std::exception& e) {
-      Report(std::string("engine step failed: ") + e.what());
+      Report(EngineReport::Kind::Warning, std::string("engine step failed: ") + e.what());
     } catch (...) {
-      Report("engine step failed");
+      Report(EngineReport::Kind::Warning, "engine step failed");
     }
     std::unique_lock<std::mutex> lock(wake_mutex_);
-    auto woken = [&] { return stop_requested_ || woken_ || wake_generation_ != seen; };
+    auto woken = [&] { return Retired(generation) || woken_ || wake_generation_ != seen; };
     auto wait = std::chrono::duration_cast<std::chrono::steady_clock::duration>(kClockLook);
     if (wakeup) {
       const auto until = *wakeup - clock.Now();
@@ -805,6 +1177,9 @@ void EngineCore::Loop() {
     }
     wake_cv_.wait_for(lock, wait, woken);
   }
+  std::lock_guard<std::mutex> lock(wake_mutex_);
+  live_loops_.erase(std::remove(live_loops_.begin(), live_loops_.end(), generation), live_loops_.end());
+  wake_cv_.notify_all();
 }
 
 std::vector<std::string> EngineCore::ActiveStates() const {
@@ -834,8 +1209,11 @@ Statechart::Statechart(std::string name, kse::messaging::MessageHub& hub, Option
       core_(std::make_unique<detail::EngineCore>(*this, hub, options)) {}
 
 Statechart::~Statechart() {
-  core_->Shutdown();
-  core_.reset();
+  if (core_->Shutdown()) {
+    detail::EngineCore::KeepAbandoned(std::move(core_));
+  } else {
+    core_.reset();
+  }
 }
 
 void Statechart::AdoptState(std::unique_ptr<State> state) { core_->AdoptState(std::move(state)); }
@@ -869,6 +1247,34 @@ std::size_t Statechart::StepNumber() const noexcept { return core_->step_number_
 std::optional<kse::messaging::TimePoint> Statechart::NextWakeup() const { return core_->NextWakeup(); }
 std::size_t Statechart::RunningActivities() const noexcept {
   return core_->running_activities_.load();
+}
+std::size_t Statechart::Overruns() const noexcept { return core_->overruns_.load(); }
+void Statechart::SetReporter(Reporter reporter) { core_->SetReporter(std::move(reporter)); }
+void Statechart::SetWatchdogLimit(std::chrono::milliseconds limit) { core_->SetWatchdogLimit(limit); }
+std::chrono::milliseconds Statechart::WatchdogLimit() const noexcept { return core_->WatchdogLimit(); }
+void Statechart::SetActivityWatchdogLimit(const std::string& activity,
+                                          std::chrono::milliseconds limit) {
+  core_->SetActivityWatchdogLimit(activity, limit);
+}
+
+const char* ToString(EngineReport::Kind kind) noexcept {
+  switch (kind) {
+    case EngineReport::Kind::Failure:
+      return "failure";
+    case EngineReport::Kind::Overrun:
+      return "overrun";
+    case EngineReport::Kind::OverrunEnded:
+      return "overrun-ended";
+    case EngineReport::Kind::Abandoned:
+      return "abandoned";
+    case EngineReport::Kind::Warning:
+      return "warning";
+  }
+  return "?";
+}
+
+std::string ToString(const EngineReport& report) {
+  return "[kse] statechart '" + report.chart + "': " + report.text;
 }
 void Statechart::SetObserver(Observer observer) { core_->SetObserver(std::move(observer)); }
 void Statechart::Wake() { core_->Wake(); }

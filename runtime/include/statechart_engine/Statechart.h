@@ -1,7 +1,9 @@
 #ifndef STATECHART_ENGINE_STATECHART_H
 #define STATECHART_ENGINE_STATECHART_H
 
+#include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,6 +20,36 @@
 
 namespace statechart_engine {
 
+/// Something the engine tells its user: a failure of user code, a call into user code that runs
+/// longer than the watchdog's limit (and later its end), Stop() giving up on calls that do not
+/// return, or a warning. Failures keep the texts they always had.
+struct EngineReport {
+  enum class Kind {
+    Failure,       ///< a guard, action, activity or hook threw (and was counted)
+    Overrun,       ///< a call has run longer than its watchdog limit and is still running
+    OverrunEnded,  ///< that call returned at last
+    Abandoned,     ///< Stop() or the destructor stopped waiting for calls that still run
+    Warning,       ///< anything else (RunUntilStable's bound, a connector chain too deep)
+  };
+  Kind kind = Kind::Warning;
+  std::string chart;  ///< the statechart's name
+  std::string text;   ///< what happened, without the statechart's name
+  /// Overrun and OverrunEnded: the call, e.g. "activity 'Scan' of state 0.2 'Node_0_2'" or
+  /// "guard of transition 'A_TO_B' (0.1 -> 0.2)"; the same number in both reports of one
+  /// overrun (never 0); how long the call had run when the watchdog looked.
+  std::string call;
+  std::uint64_t overrun = 0;
+  std::chrono::milliseconds running{0};
+};
+const char* ToString(EngineReport::Kind kind) noexcept;
+/// The line the default reporter writes on standard error: `[kse] statechart 'X': text`.
+std::string ToString(const EngineReport& report);
+
+/// Receives the engine's reports. It is called on whatever thread noticed (the engine's, a
+/// worker's, the watchdog's), possibly on several at once, so it must be thread-safe, return
+/// promptly and not call the statechart (whose engine may be stuck in the call reported).
+using Reporter = std::function<void(const EngineReport&)>;
+
 struct Options {
   /// Run activities on the calling thread, inside the transition that enters their state (the
   /// simulator does, so that a match is deterministic). An inline activity never leaves its
@@ -25,6 +57,16 @@ struct Options {
   bool inline_activities = false;
   /// Size of the activity worker pool, as Monas' (0 behaves like inline_activities = true).
   std::size_t worker_threads = 10;
+  /// The watchdog reports (once, as EngineReport::Kind::Overrun) every call into user code of
+  /// this statechart (activity, guard, action, entry/exit hook, UserInit, observer) that runs
+  /// longer than this. A behaviour step on a Nao takes milliseconds. Zero turns it off.
+  /// SetActivityWatchdogLimit() sets it for one activity.
+  std::chrono::milliseconds watchdog_limit{1000};
+  /// Stop() and the destructor wait at most this long for the engine thread and the running
+  /// activities; what still runs then is reported (Kind::Abandoned) and no longer waited for.
+  std::chrono::milliseconds stop_limit{1000};
+  /// Where reports go; empty: standard error, one line each (see ToString(EngineReport)).
+  Reporter reporter;
 };
 
 /// The root of a statechart: an OR state that owns every state and transition created through
@@ -50,8 +92,11 @@ struct Options {
 /// - The engine re-evaluates (steps until nothing fires) only when it is woken: once activated,
 ///   when an activity returns, and when a wake-up time asked for by a TimeoutAction passes. A
 ///   publish does not wake it; guards read blackboard snapshots (Blackboard::ProcessMessages).
-/// - Guards and actions that throw are reported on standard error and counted; a throwing
-///   guard counts as false.
+/// - Guards and actions that throw are reported (Options::reporter, standard error by default)
+///   and counted; a throwing guard counts as false.
+/// - A watchdog thread reports calls into user code that run longer than a limit
+///   (Options::watchdog_limit, 1 s by default), once per call, naming the call and its state or
+///   transition. Stop() returns within Options::stop_limit even if a call never returns.
 class Statechart : public OrState {
  public:
   using Observer = std::function<void(const TransitionSegmentBase&)>;
@@ -85,8 +130,14 @@ class Statechart : public OrState {
   /// Activates (if not yet) and runs the engine on its own thread until Stop(): whenever it is
   /// woken (an activity returned, a wake-up time passed), it steps until nothing fires.
   void Start();
-  /// Stops the engine thread and waits for running activities. The configuration is kept;
-  /// Start() resumes. Safe to call when not started.
+  /// Stops the engine thread and waits for running activities, at most Options::stop_limit in
+  /// all: a call that has not returned by then is reported (Kind::Abandoned) and goes on alone.
+  /// An activity left so finishes as usual. An engine thread left so (in a guard, an action, a
+  /// hook) holds the engine's lock until its call returns, then ends at once, without the rest
+  /// of its step: a transition it was taking stays half-taken. The configuration is kept;
+  /// Start() resumes (once such a call returned). Safe when not started. The destructor stops
+  /// too, and returns within stop_limit and about a second more even then: what it left
+  /// comes back, when it returns, to the engine's own objects, which are kept for it.
   void Stop();
   bool IsStarted() const noexcept;
 
@@ -125,6 +176,18 @@ class Statechart : public OrState {
   std::optional<kse::messaging::TimePoint> NextWakeup() const;
   /// Activities started and not finished yet.
   std::size_t RunningActivities() const noexcept;
+  /// Calls the watchdog reported as running longer than their limit.
+  std::size_t Overruns() const noexcept;
+
+  /// Replaces the reporter (Options::reporter); empty: standard error. Thread-safe.
+  void SetReporter(Reporter reporter);
+  /// The watchdog limit of every call that has no limit of its own (Options::watchdog_limit);
+  /// zero: not watched. Thread-safe, at any time.
+  void SetWatchdogLimit(std::chrono::milliseconds limit);
+  std::chrono::milliseconds WatchdogLimit() const noexcept;
+  /// The watchdog limit of the activities named so (IActivity::GetName()), in every state that
+  /// runs one; zero: never reported. Thread-safe, before or after Activate().
+  void SetActivityWatchdogLimit(const std::string& activity, std::chrono::milliseconds limit);
 
   /// Called on the engine's thread for every transition segment taken, after it completed.
   void SetObserver(Observer observer);

@@ -135,6 +135,7 @@ class BasicState : public State {
   std::atomic<bool> running_{false};
   std::atomic<std::size_t> launches_{0};
   std::size_t relaunches_ = 0;  // entries while the activity still ran (engine's wake lock)
+  std::size_t watch_slot_ = 0;  // the watchdog's slot of the activity (after Activate)
 };
 
 /// The initial pseudo-state of an OR state.

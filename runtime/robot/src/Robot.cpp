@@ -1,6 +1,7 @@
 #include <kse/robot/Robot.h>
 
 #include <stdexcept>
+#include <utility>
 
 #include <kse/messages/all.h>
 
@@ -8,11 +9,12 @@ namespace kse::robot {
 
 using messaging::Kind;
 
-Robot::Robot(const std::string& behaviour, const messaging::Clock& clock)
+Robot::Robot(const std::string& behaviour, const messaging::Clock& clock, statechart_engine::Reporter reporter)
 	: behaviour_(behaviour), hub_(clock), motion_(hub_, "motion") {
 	motion_.Subscribe("motion");
 	statechart_engine::Options options;
 	options.inline_activities = true;
+	options.reporter = std::move(reporter);
 	statechart_ = statechart_engine::StatechartFactory::Instance().Create(behaviour, hub_, options);
 	if (!statechart_) {
 		throw std::invalid_argument("no statechart registered as '" + behaviour + "'");

@@ -59,30 +59,61 @@ GameControllerLink::~GameControllerLink() {
 	if (send_socket_ >= 0) ::close(send_socket_);
 }
 
-std::optional<GameControlData> GameControllerLink::Poll() {
-	std::optional<GameControlData> newest;
+std::vector<GameControlData> GameControllerLink::Receive() {
+	std::vector<GameControlData> packets;
 	std::uint8_t buffer[2048];
 	for (;;) {
 		// MSG_TRUNC: the datagram's real length, so an oversized one is never taken for a valid one
 		const ssize_t size = ::recv(receive_socket_, buffer, sizeof buffer, MSG_TRUNC);
 		if (size < 0) break;  // EAGAIN: nothing more waiting (other errors: try again next tick)
-		++stats_.received;
 		const auto length = static_cast<std::size_t>(size);
-		PacketError error = PacketError::None;
-		auto packet = length > sizeof buffer ? std::nullopt : DecodeGameControlData(buffer, length, &error);
-		if (length > sizeof buffer) error = PacketError::TooLong;
-		switch (error) {
-			case PacketError::None:
-				++stats_.accepted;
-				newest = packet;
-				break;
-			case PacketError::TooShort: ++stats_.too_short; break;
-			case PacketError::WrongHeader: ++stats_.wrong_header; break;
-			case PacketError::WrongVersion: ++stats_.wrong_version; break;
-			case PacketError::TooLong: ++stats_.too_long; break;
-		}
+		if (auto packet = Accept(buffer, length, length > sizeof buffer)) packets.push_back(*packet);
 	}
-	return newest;
+	return packets;
+}
+
+std::optional<GameControlData> GameControllerLink::Poll() {
+	auto packets = Receive();
+	if (packets.empty()) return std::nullopt;
+	return packets.back();
+}
+
+std::vector<std::string> GameControllerLink::TakeNotices() {
+	std::vector<std::string> taken;
+	taken.swap(notices_);
+	return taken;
+}
+
+std::optional<GameControlData> GameControllerLink::Accept(const std::uint8_t* datagram, std::size_t size, bool truncated) {
+	++stats_.received;
+	PacketError error = PacketError::TooLong;
+	auto packet = truncated ? std::nullopt : DecodeGameControlData(datagram, size, &error);
+	std::uint64_t* count = nullptr;
+	std::string what;
+	switch (error) {
+		case PacketError::None: ++stats_.accepted; return packet;
+		case PacketError::TooShort:
+			count = &stats_.too_short;
+			what = "a " + std::to_string(size) + "-byte packet: too short for version " + std::to_string(kVersion) + " (" + std::to_string(kPacketSize) + " bytes)";
+			break;
+		case PacketError::TooLong:
+			count = &stats_.too_long;
+			what = "a " + std::to_string(size) + "-byte packet: too long for version " + std::to_string(kVersion) + " (" + std::to_string(kPacketSize) + " bytes)";
+			break;
+		case PacketError::WrongHeader: {
+			count = &stats_.wrong_header;
+			std::string header;
+			for (std::size_t i = 0; i < 4; ++i) header += datagram[i] >= 0x20 && datagram[i] < 0x7F ? static_cast<char>(datagram[i]) : '?';
+			what = "a packet with the header '" + header + "', not 'RGme'";
+			break;
+		}
+		case PacketError::WrongVersion:
+			count = &stats_.wrong_version;
+			what = "a version " + std::to_string(datagram[4]) + " packet: kse-match follows version " + std::to_string(kVersion) + " (GameController3)";
+			break;
+	}
+	if ((*count)++ == 0) notices_.push_back("ignored " + what + "; further ones are only counted");
+	return std::nullopt;
 }
 
 void GameControllerLink::SendReturn(const ReturnData& status) {

@@ -1,6 +1,7 @@
 #include <kse/sim/Match.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <thread>
 
@@ -31,11 +32,18 @@ const char* EventName(RefereeEvent::Type type) {
 		case RefereeEvent::Type::Placed: return "placed";
 		case RefereeEvent::Type::HalfTime: return "half-time";
 		case RefereeEvent::Type::GameStuck: return "game-stuck";
+		case RefereeEvent::Type::PenaltyShootOut: return "penalty-shoot-out";
+		case RefereeEvent::Type::Notice: return "gamecontroller";
 	}
 	return "?";
 }
 
+// The robot whose behaviour runs now, for a crash handler: an atomic pointer it may read.
+std::atomic<const char*> thinking_robot{nullptr};
+
 }  // namespace
+
+const char* Match::ThinkingRobot() noexcept { return thinking_robot.load(std::memory_order_relaxed); }
 
 Pose2 DefaultReadyPose(int number, bool takes_kick_off) {
 	if (takes_kick_off) return {-0.5, 0, 0};
@@ -58,8 +66,9 @@ Match::Match(MatchConfig config)
 		for (const auto& player_config : team_config.players) {
 			auto player = std::make_unique<Player>(player_config, std::string(team == 0 ? "home-" : "away-") + std::to_string(player_config.number),
 			                                       random_.Fork());
+			player->label = player->id + " " + player_config.behaviour;
 			if (!player_config.controller) {
-				player->robot = std::make_unique<robot::Robot>(player_config.behaviour, clock_);
+				player->robot = std::make_unique<robot::Robot>(player_config.behaviour, clock_, reports_.For(player->id, player_config.behaviour));
 				Player* raw = player.get();
 				player->robot->Chart().SetObserver([this, raw](const statechart_engine::TransitionSegmentBase& transition) {
 					raw->taken.push_back(transition.Name());
@@ -119,7 +128,14 @@ std::size_t Match::Failures() const {
 	return failures;
 }
 
-void Match::Listen(gc::GameControllerLink& link) { link_ = &link; }
+void Match::Listen(gc::GameControllerLink& link) {
+	link_ = &link;
+	referee_.ListenToGameController();
+}
+
+void Match::Follow(const gc::GameControlData& packet) {
+	Apply(referee_.Follow(packet, {config_.home.number, config_.away.number}, world_, ReadyPoses()));
+}
 
 void Match::Emit(MatchEvent event) {
 	event.time = Time();
@@ -184,7 +200,9 @@ void Match::Think(std::size_t index) {
 	p.ready_position = {static_cast<float>(ready.x), static_cast<float>(ready.y), static_cast<float>(ready.theta)};
 
 	const auto started = std::chrono::steady_clock::now();
+	thinking_robot.store(player.label.c_str(), std::memory_order_relaxed);
 	const robot::MotionCommands commands = player.robot ? player.robot->Step(p) : player.config.controller(p);
+	thinking_robot.store(nullptr, std::memory_order_relaxed);
 	engine_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 	if (!body.on_field) return;
 	const Motion before = body.motion;
@@ -219,9 +237,9 @@ void Match::WatchForStuck(std::size_t index) {
 }
 
 void Match::ExchangeWithGameController() {
-	while (auto packet = link_->Poll()) {
-		Apply(referee_.Follow(*packet, {config_.home.number, config_.away.number}, world_, ReadyPoses()));
-	}
+	// every packet in order: each one's state is followed, and the end of the game is counted in packets
+	for (const auto& packet : link_->Receive()) Follow(packet);
+	for (auto& notice : link_->TakeNotices()) Emit({0, "gamecontroller", -1, -1, std::move(notice)});
 	if (ticks_ % 50 != 0) return;  // robots answer twice a second
 	for (std::size_t i = 0; i < players_.size(); ++i) {
 		const Body& body = world_.bodies[i];
@@ -269,7 +287,7 @@ void Match::Run(double seconds, const std::function<void(const Match&)>& progres
 	const std::uint64_t end = seconds > 0 ? ticks_ + static_cast<std::uint64_t>(std::llround(seconds / kTick)) : UINT64_MAX;
 	const auto wall_start = std::chrono::steady_clock::now();
 	const std::uint64_t first = ticks_;
-	while (ticks_ < end && !(started_ && referee_.State() == GameState::Finished)) {
+	while (ticks_ < end && !(started_ && referee_.GameOver())) {
 		Step();
 		if (realtime) std::this_thread::sleep_until(wall_start + std::chrono::milliseconds(10 * (ticks_ - first)));
 		if (progress && ticks_ % 100 == 0) progress(*this);
@@ -280,6 +298,7 @@ void Match::Run(double seconds, const std::function<void(const Match&)>& progres
 void Match::End() {
 	if (ended_) return;
 	ended_ = true;
+	reports_.Flush();
 	for (auto* observer : observers_) observer->OnEnd(*this);
 }
 

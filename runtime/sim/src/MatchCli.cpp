@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -12,7 +13,9 @@
 
 #include <statechart_engine/Factories.h>
 #include <kse/sim/GameControllerLink.h>
+#include <kse/sim/LogFile.h>
 #include <kse/sim/MatchLog.h>
+#include <kse/sim/MatchSupervisor.h>
 
 namespace kse::sim {
 
@@ -28,11 +31,17 @@ Plays a simulated RoboCup SPL match between the registered behaviours of this pr
   --halves N         1 or 2 (default 1)
   --duration SECONDS stop after this much simulated time (default: when the game is FINISHED)
   --start-playing    skip INITIAL, READY and SET: start at the kick-off in PLAYING
-  --log FILE         write the JSON-lines log of the match
+  --log FILE         write the JSON-lines log of the match, as it runs (whole lines, at least every
+                     second: after a crash, a hang or Ctrl+C it holds the match up to then)
   --svg FILE         write a picture of the match
   --realtime         run at real speed (to watch it) instead of as fast as possible
-  --gamecontroller   follow a real GameController (UDP 3838 on loopback) and answer on 3939
-  --home-number N, --away-number N   team numbers (default 7 and 8)
+  --hang-limit SECONDS  end the match (exit status 3) when a robot's behaviour has been in one
+                     call this long (default 5; 0: wait forever); the engine's watchdog names
+                     the call after 1 s
+  --gamecontroller   follow a real GameController (UDP 3838 on loopback) and answer on 3939,
+                     the whole game: it ends when the game is over, not at one FINISHED
+  --home-number N, --away-number N   team numbers (default 7 and 8); with --gamecontroller,
+                     the numbers of the teams set in the GameController
   --list             list the behaviours this program can play
   --quiet            no progress lines
   --help
@@ -88,6 +97,14 @@ double ParseNumber(const std::string& option, const std::string& text, double lo
 	return value;
 }
 
+/** Says at once, even with --quiet, what following a GameController noticed (team numbers, ignored packets, silence). */
+class GameControllerNotices : public MatchObserver {
+public:
+	void OnEvent(const Match&, const MatchEvent& event) override {
+		if (event.type == "gamecontroller") std::cerr << "kse-match: " << event.detail << "\n";
+	}
+};
+
 /** Writes a file whole or not at all: to a temporary name first, then renamed. */
 void WriteAtomically(const std::string& path, const std::string& content) {
 	const std::string temporary = path + ".tmp";
@@ -108,6 +125,7 @@ int RunMatchCli(int argc, char** argv) {
 	std::string away;
 	std::string log_path, svg_path;
 	double duration = 0;
+	double hang_limit = 5;
 	bool realtime = false, quiet = false, gamecontroller = false;
 	try {
 		for (int i = 1; i < argc; ++i) {
@@ -140,6 +158,8 @@ int RunMatchCli(int argc, char** argv) {
 				log_path = value();
 			} else if (option == "--svg") {
 				svg_path = value();
+			} else if (option == "--hang-limit") {
+				hang_limit = ParseNumber(option, value(), 0, 3600);
 			} else if (option == "--realtime") {
 				realtime = true;
 			} else if (option == "--gamecontroller") {
@@ -167,17 +187,30 @@ int RunMatchCli(int argc, char** argv) {
 
 	try {
 		std::unique_ptr<gc::GameControllerLink> link;
+		// The log is streamed, and the supervisor comes before the match: its signal mask must
+		// reach every thread the match starts.
+		std::unique_ptr<LogFile> log_file;
+		std::unique_ptr<JsonLinesLog> log;
+		if (!log_path.empty()) {
+			log_file = std::make_unique<LogFile>(log_path);
+			log = std::make_unique<JsonLinesLog>(*log_file);
+		}
+		MatchSupervisor supervisor({std::chrono::milliseconds(std::llround(hang_limit * 1000))}, log_file.get(), log.get());
 		Match match(config);
-		std::ostringstream log_text;
-		JsonLinesLog log(log_text);
+		match.Reports().SetListener([&supervisor](const RobotReport& report) { supervisor.OnReport(report); });
 		SvgPicture picture;
-		if (!log_path.empty()) match.AddObserver(log);
+		GameControllerNotices notices;
+		if (log) match.AddObserver(*log);
 		if (!svg_path.empty()) match.AddObserver(picture);
 		if (gamecontroller) {
 			link = std::make_unique<gc::GameControllerLink>(gc::GameControllerLink::Options{});
 			match.Listen(*link);
+			match.AddObserver(notices);
 			realtime = true;  // a GameController runs in real time
-			if (!quiet) std::cerr << "kse-match: following the GameController on 127.0.0.1:" << link->ListenPort() << "\n";
+			if (!quiet) {
+				std::cerr << "kse-match: following the GameController on 127.0.0.1:" << link->ListenPort() << " as teams " << config.home.number
+				          << " (home) and " << config.away.number << " (away)\n";
+			}
 		}
 		const auto wall_start = std::chrono::steady_clock::now();
 		double next_report = realtime ? 5 : 60;
@@ -189,7 +222,6 @@ int RunMatchCli(int argc, char** argv) {
 			          << "  " << Fixed(m.GetReferee().SecsRemaining(), 0) << " s left\n";
 		}, realtime);
 		const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-		if (!log_path.empty()) WriteAtomically(log_path, log_text.str());
 		if (!svg_path.empty()) {
 			std::ostringstream svg;
 			picture.Write(svg);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace kse::sim {
 
@@ -45,61 +46,136 @@ std::string Score(const Match& match) {
 }  // namespace
 
 void JsonLinesLog::OnStart(const Match& match) {
+	std::ostringstream line;
 	const auto& config = match.Config();
-	out_ << "{\"type\":\"match\",\"version\":1,\"seed\":" << config.seed << ",\"tick\":" << Fixed(Match::kTick)
+	line << "{\"type\":\"match\",\"version\":1,\"seed\":" << config.seed << ",\"tick\":" << Fixed(Match::kTick)
 	     << ",\"field\":{\"length\":" << Fixed(2 * field::kHalfLength) << ",\"width\":" << Fixed(2 * field::kHalfWidth)
 	     << ",\"goalWidth\":" << Fixed(2 * field::kGoalInnerHalfWidth) << "},\"halfSeconds\":" << Fixed(config.referee.half_seconds, 1)
 	     << ",\"teams\":[";
 	for (int team = 0; team < 2; ++team) {
 		const TeamConfig& t = match.Team(team);
-		out_ << (team ? "," : "") << "{\"number\":" << t.number << ",\"name\":" << JsonString(t.name) << ",\"players\":[";
+		line << (team ? "," : "") << "{\"number\":" << t.number << ",\"name\":" << JsonString(t.name) << ",\"players\":[";
 		bool first = true;
 		for (std::size_t i = 0; i < match.RobotCount(); ++i) {
 			if (match.GetWorld().bodies[i].team != team) continue;
-			out_ << (first ? "" : ",") << "{\"id\":" << JsonString(match.RobotId(i)) << ",\"number\":" << match.GetWorld().bodies[i].number
+			line << (first ? "" : ",") << "{\"id\":" << JsonString(match.RobotId(i)) << ",\"number\":" << match.GetWorld().bodies[i].number
 			     << ",\"behaviour\":" << JsonString(match.Behaviour(i)) << "}";
 			first = false;
 		}
-		out_ << "]}";
+		line << "]}";
 	}
-	out_ << "]}\n";
+	line << "]}";
+	Write(line, 0);
 }
 
 void JsonLinesLog::OnFrame(const Match& match) {
+	std::ostringstream line;
 	const World& world = match.GetWorld();
 	const Referee& referee = match.GetReferee();
-	out_ << "{\"type\":\"frame\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(referee.State())
+	line << "{\"type\":\"frame\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(referee.State())
 	     << "\",\"half\":" << referee.Half() << ",\"secs\":" << Fixed(referee.SecsRemaining(), 1) << ",\"score\":" << Score(match)
 	     << ",\"ball\":[" << Fixed(world.ball.position.x) << "," << Fixed(world.ball.position.y) << "," << Fixed(world.ball.velocity.x)
 	     << "," << Fixed(world.ball.velocity.y) << "],\"robots\":[";
 	for (std::size_t i = 0; i < match.RobotCount(); ++i) {
 		const Body& body = world.bodies[i];
-		out_ << (i ? "," : "") << "{\"id\":" << JsonString(match.RobotId(i)) << ",\"pose\":[" << Fixed(body.pose.x) << ","
+		line << (i ? "," : "") << "{\"id\":" << JsonString(match.RobotId(i)) << ",\"pose\":[" << Fixed(body.pose.x) << ","
 		     << Fixed(body.pose.y) << "," << Fixed(body.pose.theta) << "],\"head\":[" << Fixed(body.head_yaw) << ","
 		     << Fixed(body.head_pitch) << "],\"motion\":\"" << ToString(body.motion) << "\",\"penalty\":" << referee.Penalty(static_cast<int>(i))
 		     << ",\"ballSeen\":" << (match.LastPerception(i).ball.seen ? "true" : "false") << ",\"active\":[";
 		const auto active = match.ActiveStates(i);
-		for (std::size_t s = 0; s < active.size(); ++s) out_ << (s ? "," : "") << JsonString(active[s]);
-		out_ << "],\"taken\":[";
+		for (std::size_t s = 0; s < active.size(); ++s) line << (s ? "," : "") << JsonString(active[s]);
+		line << "],\"taken\":[";
 		const auto& taken = match.TransitionsSinceFrame(i);
-		for (std::size_t s = 0; s < taken.size(); ++s) out_ << (s ? "," : "") << JsonString(taken[s]);
-		out_ << "]}";
+		for (std::size_t s = 0; s < taken.size(); ++s) line << (s ? "," : "") << JsonString(taken[s]);
+		line << "]}";
 	}
-	out_ << "]}\n";
+	line << "]}";
+	Write(line, match.Time());
 }
 
 void JsonLinesLog::OnEvent(const Match& match, const MatchEvent& event) {
-	out_ << "{\"type\":\"event\",\"t\":" << Fixed(event.time, 2) << ",\"event\":" << JsonString(event.type);
-	if (event.team >= 0) out_ << ",\"team\":" << event.team;
-	if (event.robot >= 0) out_ << ",\"robot\":" << JsonString(match.RobotId(static_cast<std::size_t>(event.robot)));
-	if (!event.detail.empty()) out_ << ",\"detail\":" << JsonString(event.detail);
-	out_ << "}\n";
+	std::ostringstream line;
+	line << "{\"type\":\"event\",\"t\":" << Fixed(event.time, 2) << ",\"event\":" << JsonString(event.type);
+	if (event.team >= 0) line << ",\"team\":" << event.team;
+	if (event.robot >= 0) line << ",\"robot\":" << JsonString(match.RobotId(static_cast<std::size_t>(event.robot)));
+	if (!event.detail.empty()) line << ",\"detail\":" << JsonString(event.detail);
+	line << "}";
+	Write(line, event.time);
 }
 
 void JsonLinesLog::OnEnd(const Match& match) {
-	out_ << "{\"type\":\"result\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(match.GetReferee().State())
-	     << "\",\"score\":" << Score(match) << ",\"stuck\":" << match.StuckCount() << ",\"failures\":" << match.Failures() << "}\n";
-	out_.flush();
+	std::ostringstream line;
+	line << "{\"type\":\"result\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(match.GetReferee().State())
+	     << "\",\"score\":" << Score(match) << ",\"stuck\":" << match.StuckCount() << ",\"failures\":" << match.Failures() << "}";
+	Write(line, match.Time());
+	if (file_) file_->Flush();
+	if (out_) out_->flush();
+}
+
+void JsonLinesLog::Write(const std::ostringstream& line, double time) {
+	std::string text = line.str();
+	text += '\n';
+	if (file_) file_->Append(text);
+	if (out_) *out_ << text;
+	last_centiseconds_.store(std::llround(time * 100), std::memory_order_relaxed);
+}
+
+void JsonLinesLog::Aborted(const std::string& reason, const std::string& robot, const std::string& detail) {
+	std::ostringstream line;
+	line << "{\"type\":\"aborted\",\"t\":" << Fixed(static_cast<double>(LastCentiseconds()) / 100, 2) << ",\"reason\":" << JsonString(reason);
+	if (!robot.empty()) line << ",\"robot\":" << JsonString(robot);
+	line << ",\"detail\":" << JsonString(detail) << "}";
+	Write(line, static_cast<double>(LastCentiseconds()) / 100);
+	if (file_) file_->Flush();
+	if (out_) out_->flush();
+}
+
+std::size_t JsonLinesLog::AbortedLine(char* out, std::size_t size, std::int64_t centiseconds, const char* reason, const char* robot,
+                                      const char* detail) noexcept {
+	std::size_t used = 0;
+	bool fits = true;
+	auto add = [&](const char* text, bool quoted) {
+		for (; *text != '\0'; ++text) {
+			// ids and signal names need no escapes; anything that would is left out
+			if (quoted && (*text == '"' || *text == '\\' || static_cast<unsigned char>(*text) < 0x20)) continue;
+			if (used + 1 >= size) {
+				fits = false;
+				return;
+			}
+			out[used++] = *text;
+		}
+	};
+	auto add_string = [&](const char* text) {
+		add("\"", false);
+		add(text, true);
+		add("\"", false);
+	};
+	char number[32];
+	std::size_t digits = 0;
+	std::int64_t value = centiseconds < 0 ? 0 : centiseconds;
+	do {
+		number[digits++] = static_cast<char>('0' + value % 10);
+		value /= 10;
+	} while (value > 0 || digits < 3);
+	char time[36];
+	std::size_t length = 0;
+	for (std::size_t i = digits; i-- > 0;) {
+		time[length++] = number[i];
+		if (i == 2) time[length++] = '.';
+	}
+	time[length] = '\0';
+	add("{\"type\":\"aborted\",\"t\":", false);
+	add(time, false);
+	add(",\"reason\":", false);
+	add_string(reason);
+	if (robot != nullptr) {
+		add(",\"robot\":", false);
+		add_string(robot);
+	}
+	add(",\"detail\":", false);
+	add_string(detail);
+	add("}\n", false);
+	return fits ? used : 0;
 }
 
 // ---------------------------------------------------------------------------------------------

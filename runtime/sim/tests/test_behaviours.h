@@ -1,11 +1,16 @@
 #pragma once
 // Small statecharts written against the engine for the simulator's own tests (the real
 // behaviours live in examples/): a Chaser that walks to the ball and kicks it towards the
-// opponent goal, and a Sleeper whose statechart stops after its first state.
+// opponent goal, a Sleeper whose statechart stops after its first state, and chasers that go
+// wrong after a while: a Thrower (throws in every cycle from its second), a Hanger (never
+// returns, after 2 s of play) and a Crasher (writes through a null pointer after 3 s).
 
+#include <chrono>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <thread>
 
 #include <kse/messages/all.h>
 #include <kse/robot/Robot.h>
@@ -95,7 +100,67 @@ private:
 	statechart_engine::Statechart chart_;
 };
 
+// A Chase that goes wrong at its n-th run (runs come every 100 ms).
+template <class Failure>
+class FailingChase : public Chase {
+public:
+	int Execute() override {
+		if (++runs_ >= Failure::kFromRun) Failure::Fail();
+		return Chase::Execute();
+	}
+	std::string GetName() override { return Failure::kName; }
+
+private:
+	int runs_ = 0;
+};
+
+struct Throws {
+	static constexpr int kFromRun = 2;
+	static constexpr const char* kName = "Throw";
+	static void Fail() { throw std::runtime_error("the ball is not where it should be"); }
+};
+
+struct Hangs {
+	static constexpr int kFromRun = 20;
+	static constexpr const char* kName = "Hang";
+	[[noreturn]] static void Fail() {
+		for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+	}
+};
+
+// Through a pointer the compiler cannot see is null: a real SIGSEGV, not a trap it put there.
+inline volatile int* volatile nowhere = nullptr;
+struct Crashes {
+	static constexpr int kFromRun = 30;
+	static constexpr const char* kName = "Crash";
+	static void Fail() { *nowhere = 1; }
+};
+
+// START -> the failing chase, again every 100 ms (as the Chaser)
+template <class Failure>
+class FailingChart : public statechart_engine::IStatechart {
+public:
+	FailingChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options)
+		: chart_(std::string("Node_") + Failure::kName, hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* act = chart_.Add<BasicState>(std::string("Node_") + Failure::kName, &chart_, std::make_unique<FailingChase<Failure>>());
+		act->SetLabel("0.2");
+		chart_.AddTransition(start, act, nullptr, std::make_unique<TimeoutAction>("tick", 100));
+		chart_.AddTransition(act, act, std::make_unique<TimeoutCondition>("tick"), std::make_unique<TimeoutAction>("tick", 100));
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
 inline const statechart_engine::StatechartRegistrar<ChaserChart> chaser_registrar("Chaser");
+inline const statechart_engine::StatechartRegistrar<FailingChart<Throws>> thrower_registrar("Thrower");
+inline const statechart_engine::StatechartRegistrar<FailingChart<Hangs>> hanger_registrar("Hanger");
+inline const statechart_engine::StatechartRegistrar<FailingChart<Crashes>> crasher_registrar("Crasher");
 inline const statechart_engine::StatechartRegistrar<SleeperChart> sleeper_registrar("Sleeper");
 
 }  // namespace sim_test

@@ -65,8 +65,12 @@ struct MotionCommands {
 
 class Robot {
 public:
-	/** Runs the statechart registered as {@code behaviour}; activities run inline, so stepping is deterministic. */
-	Robot(const std::string& behaviour, const messaging::Clock& clock);
+	/**
+	 * Runs the statechart registered as {@code behaviour}; activities run inline, so stepping is
+	 * deterministic. The engine's reports (failures, watchdog overruns) go to {@code reporter}
+	 * (standard error when empty).
+	 */
+	Robot(const std::string& behaviour, const messaging::Clock& clock, statechart_engine::Reporter reporter = {});
 
 	/** Publishes the perception, runs the statechart to a stable state and collects the motion commands. */
 	MotionCommands Step(const Perception& perception);

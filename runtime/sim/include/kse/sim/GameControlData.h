@@ -33,6 +33,13 @@ constexpr std::uint8_t kPenaltyNone = 0, kPenaltyIllegalBallContact = 1, kPenalt
                        kPenaltyInactivePlayer = 4, kPenaltyIllegalPosition = 5, kPenaltyLeavingTheField = 6,
                        kPenaltyRequestForPickup = 7, kPenaltyLocalGameStuck = 8, kPenaltyIllegalPositionInSet = 9,
                        kPenaltyPlayerStance = 10, kPenaltyIllegalMotionInStandby = 11, kPenaltySubstitute = 14, kPenaltyManual = 15;
+// kickingTeam when no team kicks off
+constexpr std::uint8_t kKickingTeamNone = 255;
+
+/** A penalty number of the protocol (12 and 13 are not). */
+constexpr bool IsPenalty(std::uint8_t penalty) {
+	return penalty <= kPenaltyIllegalMotionInStandby || penalty == kPenaltySubstitute || penalty == kPenaltyManual;
+}
 
 struct RobotInfo {
 	std::uint8_t penalty = 0;

@@ -1,11 +1,12 @@
 #pragma once
 // A loopback UDP link to a real GameController: receives its packets on 3838 (without blocking,
-// malformed ones counted and ignored) and sends the robots' status to 3939 without binding it,
-// since the GameController binds 3939 itself.
+// malformed ones counted and ignored, the first of each kind described once) and sends the
+// robots' status to 3939 without binding it, since the GameController binds 3939 itself.
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <kse/sim/GameControlData.h>
 
@@ -35,8 +36,12 @@ public:
 	GameControllerLink(const GameControllerLink&) = delete;
 	GameControllerLink& operator=(const GameControllerLink&) = delete;
 
+	/** Reads every datagram waiting; the valid packets among them, oldest first. */
+	std::vector<GameControlData> Receive();
 	/** Reads every datagram waiting; the newest valid packet, or nullopt when none came. */
 	std::optional<GameControlData> Poll();
+	/** What the link ignored since the last call, the first datagram of each kind only: a GameController repeats itself twice a second. */
+	std::vector<std::string> TakeNotices();
 	/** Sends a robot's status to address:return_port; a failure is counted, never thrown. */
 	void SendReturn(const ReturnData& status);
 
@@ -45,11 +50,15 @@ public:
 	std::uint64_t Malformed() const { return stats_.too_short + stats_.wrong_header + stats_.wrong_version + stats_.too_long; }
 
 private:
+	/** The one way a datagram is judged; {@code truncated}: longer than the buffer it was read into. */
+	std::optional<GameControlData> Accept(const std::uint8_t* datagram, std::size_t size, bool truncated);
+
 	Options options_;
 	int receive_socket_ = -1;
 	int send_socket_ = -1;
 	std::uint16_t listen_port_ = 0;
 	Statistics stats_;
+	std::vector<std::string> notices_;
 };
 
 }  // namespace kse::sim::gc

@@ -17,12 +17,14 @@
 #include <kse/robot/Robot.h>
 #include <kse/sim/Perception.h>
 #include <kse/sim/Referee.h>
+#include <kse/sim/RobotReports.h>
 #include <kse/sim/World.h>
 
 namespace kse::sim {
 
 namespace gc {
 class GameControllerLink;
+struct GameControlData;
 }
 
 /** A controller instead of a statechart: scripted players, and the benchmark's baseline. */
@@ -58,7 +60,7 @@ struct MatchConfig {
 /** Anything worth a line in the log. */
 struct MatchEvent {
 	double time = 0;
-	std::string type;  // state, goal, ball-out, penalty, unpenalised, placed, half-time, game-stuck, kick, missed-kick, fall, stuck, failure
+	std::string type;  // state, goal, ball-out, penalty, unpenalised, placed, half-time, game-stuck, penalty-shoot-out, gamecontroller, kick, missed-kick, fall, stuck, failure
 	int team = -1;
 	int robot = -1;
 	std::string detail;
@@ -87,12 +89,14 @@ public:
 	Match& operator=(const Match&) = delete;
 
 	void AddObserver(MatchObserver& observer) { observers_.push_back(&observer); }
-	/** Follows a real GameController's packets and answers it for every robot. */
+	/** Follows a real GameController's packets (only them: the robots wait in INITIAL for the first) and answers it for every robot. */
 	void Listen(gc::GameControllerLink& link);
+	/** Follows one GameController packet, as the link does with each it accepts. */
+	void Follow(const gc::GameControlData& packet);
 
 	/** One tick. The first call starts the match (observers see OnStart). */
 	void Step();
-	/** Steps until FINISHED or until {@code seconds} of simulated time have passed; observers see OnEnd. */
+	/** Steps until the game is over (Referee::GameOver) or {@code seconds} of simulated time have passed; observers see OnEnd. */
 	void Run(double seconds, const std::function<void(const Match&)>& progress = {}, bool realtime = false);
 	void End();
 
@@ -124,11 +128,16 @@ public:
 	std::size_t Failures() const;
 	/** Wall-clock seconds spent in the robots' statecharts (perception published, run, commands read). */
 	double EngineSeconds() const { return engine_seconds_; }
+	/** What the robots' engines report, each line naming its robot ("[home-2 Defender] ..."), repeats rate-limited. */
+	RobotReports& Reports() { return reports_; }
+	/** "home-2 Defender" while a match runs that robot's behaviour, else null; for a crash handler (any thread). */
+	static const char* ThinkingRobot() noexcept;
 
 private:
 	struct Player {
 		PlayerConfig config;
 		std::string id;
+		std::string label;  // id and behaviour, as messages name the robot
 		std::unique_ptr<robot::Robot> robot;
 		RobotSense sense;
 		robot::Perception perception;
@@ -156,6 +165,7 @@ private:
 	Referee referee_;
 	std::vector<std::unique_ptr<Player>> players_;
 	std::vector<MatchObserver*> observers_;
+	RobotReports reports_;
 	std::vector<MatchEvent> events_;
 	gc::GameControllerLink* link_ = nullptr;
 	std::uint64_t ticks_ = 0;

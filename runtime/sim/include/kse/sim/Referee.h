@@ -1,7 +1,9 @@
 #pragma once
 // The game controller and referee of a simulated SPL game: the states INITIAL, READY, SET,
 // PLAYING and FINISHED, kick-off, goals, the ball leaving the field, and penalties for leaving
-// the field and for pushing. It can instead follow a real GameController's packets.
+// the field and for pushing. It can instead follow a real GameController's packets: a state in
+// a packet is a state the robots follow, and the game is over only when the packets have said
+// FINISHED after the first half for a while (GameOver(), runtime/README.md).
 
 #include <array>
 #include <cstdint>
@@ -39,11 +41,16 @@ struct RefereeConfig {
 	double penalty_seconds = 45;
 	double pushing_seconds = 3;    // walking into a robot this long is pushing
 	double game_stuck_seconds = 30;  // nobody touched the ball: kick-off again
+	// following a GameController: FINISHED after the first half, held this long, ends the game
+	double game_over_seconds = 5;
+	double shoot_out_wait_seconds = 60;  // instead, while a penalty shoot-out or its next shot may still come
+	double silence_seconds = 5;          // no packet this long is reported (once until packets come again)
 };
 
 /** Something the referee decided; Match logs it and tells the robots it carried. */
 struct RefereeEvent {
-	enum class Type { State, Goal, BallOut, Penalty, Unpenalised, Placed, HalfTime, GameStuck } type;
+	// Notice: something about the GameController's packets worth saying once (detail says what)
+	enum class Type { State, Goal, BallOut, Penalty, Unpenalised, Placed, HalfTime, GameStuck, PenaltyShootOut, Notice } type;
 	int team = -1;
 	int body = -1;
 	std::string detail;
@@ -64,13 +71,27 @@ public:
 	/** Skips to PLAYING with the robots at their kick-off poses and the ball at the centre. */
 	std::vector<RefereeEvent> StartPlaying(World& world, const std::vector<Pose2>& ready_poses);
 
+	/** From now on only a GameController's packets change the game; until the first comes, the robots wait in INITIAL. */
+	void ListenToGameController() { listening_ = true; }
+	bool Listening() const { return listening_; }
 	/**
-	 * Follows a real GameController from now on: state, kick-off, scores, time and penalties
-	 * come from its packets; {@code team_numbers} are the home and away teams' numbers.
+	 * Follows one GameController packet (and listens from now on): state, half, kick-off, scores,
+	 * time and penalties come from it, values outside the protocol bounded and reported once
+	 * each; {@code team_numbers} are the home and away teams' numbers, reported at once when a
+	 * packet does not name them.
 	 */
 	std::vector<RefereeEvent> Follow(const gc::GameControlData& packet, const std::array<int, 2>& team_numbers, World& world,
 	                                 const std::vector<Pose2>& ready_poses);
+	/** A packet for our teams has been followed. */
 	bool Following() const { return following_; }
+	/**
+	 * The game is over: FINISHED by our own referee, or, listening to a GameController, FINISHED
+	 * after the first half (second half or penalty shoot-out) in every packet for
+	 * game_over_seconds (shoot_out_wait_seconds while a shoot-out or its next shot may follow)
+	 * and in at least two of them. One packet never ends a game.
+	 */
+	bool GameOver() const;
+	bool PenaltyShootOut() const { return shoot_out_; }
 
 	GameState State() const { return state_; }
 	bool FirstHalf() const { return half_ == 1; }
@@ -89,6 +110,11 @@ public:
 
 	/** Where a robot comes back after a penalty: the sideline of its own half, facing the field. */
 	Pose2 ReturnPose(const World& world, int body) const;
+	/** In a penalty shoot-out: the kicker behind the penalty mark, the other team's robot on the goal line. */
+	Pose2 PenaltyShotPose(int body_team) const;
+
+	/** The bounds of the times the robots are told (s); a packet's value outside them is clamped. */
+	static constexpr double kLongestTime = 3600;
 
 private:
 	struct Penalised {
@@ -102,6 +128,11 @@ private:
 	void Penalise(World& world, int body, int type, double seconds, std::vector<RefereeEvent>& events);
 	void Unpenalise(World& world, int body, std::vector<RefereeEvent>& events);
 	void BallOut(World& world, std::vector<RefereeEvent>& events);
+	void PlaceForPenaltyShot(World& world, std::vector<RefereeEvent>& events);
+	std::vector<RefereeEvent> Listen(double dt);
+	/** Each kind of notice is given once: a GameController sends the same packet twice a second. */
+	void NoticeOnce(unsigned kind, int team, int body, std::string detail, std::vector<RefereeEvent>& events);
+	double Bounded(const char* field, int value, unsigned kind, std::vector<RefereeEvent>& events);
 
 	RefereeConfig config_;
 	GameState state_ = GameState::Initial;
@@ -116,6 +147,15 @@ private:
 	double untouched_ = 0;
 	std::vector<Penalised> penalised_;
 	bool following_ = false;
+	bool listening_ = false;
+	bool shoot_out_ = false;
+	bool final_finished_ = false;  // the newest packet said FINISHED after the first half
+	bool shoot_out_may_follow_ = false;
+	int finished_packets_ = 0;     // in a row
+	double finished_seconds_ = 0;
+	double since_packet_ = 0;
+	bool silence_reported_ = false;
+	std::uint32_t noticed_ = 0;    // one bit per kind of notice given
 };
 
 }  // namespace kse::sim
