@@ -46,10 +46,25 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 		sessions.addListener(this, clientId);
 	}
 
+	/**
+	 * The command stack the session listens to. A session may ask for a model again (a page
+	 * reloads, a client repeats itself): it listens once, to the stack of the model it has now.
+	 * Added at each request, the listeners piled up on a stack that pages share, and outlived their
+	 * session: every later edit dispatched to stopped sessions (the diagram fuzz suite found it).
+	 */
+	private org.eclipse.emf.common.command.CommandStack listened;
+
 	@Override
 	public List<Action> submitInitialModel(RequestModelAction requestAction) {
 		List<Action> actions = super.submitInitialModel(requestAction);
-		state.getDomain().getCommandStack().addCommandStackListener(externalChanges);
+		org.eclipse.emf.common.command.CommandStack stack = state.getDomain().getCommandStack();
+		if (listened != stack) {
+			if (listened != null) {
+				listened.removeCommandStackListener(externalChanges);
+			}
+			stack.addCommandStackListener(externalChanges);
+			listened = stack;
+		}
 		return actions;
 	}
 
@@ -64,8 +79,11 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 			liveValidationDebouncer.dispose();
 			liveValidationDebouncer = null;
 		}
+		if (listened != null) {
+			listened.removeCommandStackListener(externalChanges);
+			listened = null;
+		}
 		if (state.getSource() != null) {
-			state.getDomain().getCommandStack().removeCommandStackListener(externalChanges);
 			state.getSource().close();
 		}
 	}

@@ -16,7 +16,6 @@ import org.eclipse.glsp.graph.GGraph;
 import org.eclipse.glsp.graph.GNode;
 import org.eclipse.glsp.server.actions.Action;
 import org.eclipse.glsp.server.actions.ActionMessage;
-import org.eclipse.glsp.server.di.ServerModule;
 import org.eclipse.glsp.server.features.core.model.RequestBoundsAction;
 import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.features.core.model.SetModelAction;
@@ -28,7 +27,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kse.diagram.server.StatechartDiagramConfiguration;
-import org.kse.diagram.server.StatechartDiagramModule;
+import org.kse.diagram.server.StatechartServerModule;
 import org.kse.diagram.server.StatechartGraph;
 
 import com.google.inject.Guice;
@@ -48,7 +47,7 @@ class DiagramServerTest {
 	@BeforeEach
 	void start() throws Exception {
 		Files.copy(Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.stct"), folder.resolve("Goalie.stct"));
-		server = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder))).getInstance(GLSPServer.class);
+		server = Guice.createInjector(new StatechartServerModule(folder, new org.kse.diagram.server.FileSources())).getInstance(GLSPServer.class);
 		server.connect(received::add);
 		InitializeParameters parameters = new InitializeParameters();
 		parameters.setApplicationId("kse-tests");

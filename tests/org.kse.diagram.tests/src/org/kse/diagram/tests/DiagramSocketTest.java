@@ -138,6 +138,29 @@ class DiagramSocketTest {
 		socket.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
 	}
 
+	/**
+	 * What the diagram fuzz suite found lsp4j and GLSP doing wrong, each answered now and the
+	 * connection going on: a request before initialize (GLSP's error code is gone from lsp4j, and
+	 * the NoSuchFieldError closed the connection), a notification sent as a request (answered by
+	 * lsp4j with an internal error), a request whose id is a lone surrogate (its answer could not
+	 * be sent), an id too large for lsp4j (the request went unanswered); shutdown ends the connection.
+	 */
+	@Test
+	void messagesLsp4jMishandledAreAnsweredAndShutdownEndsTheConnection() throws Exception {
+		Client client = new Client();
+		WebSocket socket = connect(server.uri(), client);
+		socket.sendText("{\"jsonrpc\":\"2.0\",\"id\":1,\"method\":\"initializeClientSession\",\"params\":{\"clientSessionId\":\"s\",\"diagramType\":\"kse-statechart\"}}", true);
+		assertTrue(client.awaitContaining("\"id\":1").contains("not initialized"), "refused before initialize");
+		socket.sendText("{\"jsonrpc\":\"2.0\",\"id\":2,\"method\":\"process\",\"params\":{\"clientId\":\"s\",\"action\":{\"kind\":\"glspUndo\"}}}", true);
+		assertTrue(client.awaitContaining("\"id\":2").contains("is a notification"), "a notification sent as a request");
+		socket.sendText("{\"jsonrpc\":\"2.0\",\"id\":\"\\ud800\",\"method\":\"initialize\",\"params\":{\"applicationId\":\"x\",\"protocolVersion\":\"1.0.0\"}}", true);
+		assertTrue(client.awaitContaining("\"id\":\"\\ud800\"").contains("\"result\""), "the answer to an id that is a lone surrogate");
+		socket.sendText("{\"jsonrpc\":\"2.0\",\"id\":9999999999,\"method\":\"initialize\",\"params\":{}}", true);
+		assertTrue(client.awaitContaining("9999999999").contains("\"error\""), "an id lsp4j cannot read is answered");
+		socket.sendText("{\"jsonrpc\":\"2.0\",\"method\":\"shutdown\"}", true);
+		assertEquals(1000, client.closed.get(10, TimeUnit.SECONDS), "shutdown ends the connection");
+	}
+
 	@Test
 	void twoTabsAreServedSideBySide() throws Exception {
 		Client first = new Client();

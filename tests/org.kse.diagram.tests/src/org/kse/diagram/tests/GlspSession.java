@@ -10,7 +10,6 @@ import org.eclipse.glsp.graph.GGraph;
 import org.eclipse.glsp.server.actions.Action;
 import org.eclipse.glsp.server.actions.ActionMessage;
 import org.eclipse.glsp.server.actions.MessageAction;
-import org.eclipse.glsp.server.di.ServerModule;
 import org.eclipse.glsp.server.features.core.model.ComputedBoundsAction;
 import org.eclipse.glsp.server.features.core.model.RequestBoundsAction;
 import org.eclipse.glsp.server.features.core.model.RequestModelAction;
@@ -18,7 +17,7 @@ import org.eclipse.glsp.server.protocol.GLSPServer;
 import org.eclipse.glsp.server.protocol.InitializeClientSessionParameters;
 import org.eclipse.glsp.server.protocol.InitializeParameters;
 import org.kse.diagram.server.StatechartDiagramConfiguration;
-import org.kse.diagram.server.StatechartDiagramModule;
+import org.kse.diagram.server.StatechartServerModule;
 
 import com.google.inject.Guice;
 
@@ -38,7 +37,7 @@ final class GlspSession implements AutoCloseable {
 	}
 
 	GlspSession(Path folder, org.kse.diagram.server.StatechartSources sources) throws Exception {
-		server = Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder, sources))).getInstance(GLSPServer.class);
+		server = Guice.createInjector(new StatechartServerModule(folder, sources)).getInstance(GLSPServer.class);
 		server.connect(message -> {
 			received.add(message);
 			// as the browser client does: measure the new graph and hand it back, which makes it the model

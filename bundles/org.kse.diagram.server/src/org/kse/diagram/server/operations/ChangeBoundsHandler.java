@@ -19,10 +19,10 @@ public class ChangeBoundsHandler extends StatechartOperationHandler<ChangeBounds
 		for (ElementAndBounds each : operation.getNewBounds()) {
 			Node node = state(each.getElementId());
 			Bounds old = state.getLayout().get(node);
-			double x = each.getNewPosition() == null ? old.x() : each.getNewPosition().getX();
-			double y = each.getNewPosition() == null ? old.y() : each.getNewPosition().getY();
-			double width = each.getNewSize() == null ? old.width() : Math.max(8, each.getNewSize().getWidth());
-			double height = each.getNewSize() == null ? old.height() : Math.max(8, each.getNewSize().getHeight());
+			double x = each.getNewPosition() == null ? old.x() : coordinate(each.getNewPosition().getX());
+			double y = each.getNewPosition() == null ? old.y() : coordinate(each.getNewPosition().getY());
+			double width = each.getNewSize() == null ? old.width() : Math.max(8, coordinate(each.getNewSize().getWidth()));
+			double height = each.getNewSize() == null ? old.height() : Math.max(8, coordinate(each.getNewSize().getHeight()));
 			moved.put(node, new Bounds(x, y, width, height));
 		}
 		if (moved.isEmpty()) {

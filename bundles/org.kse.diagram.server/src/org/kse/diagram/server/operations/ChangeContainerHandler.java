@@ -36,8 +36,8 @@ public class ChangeContainerHandler extends StatechartOperationHandler<ChangeCon
 		}
 		Bounds old = state.getLayout().get(moved);
 		double[] origin = state.getLayout().absolute(target);
-		double x = operation.getLocation().map(point -> point.getX() - origin[0]).orElse(old.x());
-		double y = operation.getLocation().map(point -> point.getY() - origin[1]).orElse(old.y());
+		double x = operation.getLocation().map(point -> coordinate(point.getX()) - origin[0]).orElse(old.x());
+		double y = operation.getLocation().map(point -> coordinate(point.getY()) - origin[1]).orElse(old.y());
 		if (target instanceof Node) {
 			y = Math.max(y, Arrange.HEADER);
 		}

@@ -26,7 +26,7 @@ public class ClipboardDataHandler extends AbstractActionHandler<RequestClipboard
 
 	private List<Action> copy(RequestClipboardDataAction action) {
 		List<Node> selected = new ArrayList<>();
-		for (String id : action.getEditorContext().getSelectedElementIds()) {
+		for (String id : DiagramClipboard.selectedIds(action.getEditorContext())) {
 			if (state.element(id) instanceof Node node && !selected.contains(node)) {
 				selected.add(node);
 			}

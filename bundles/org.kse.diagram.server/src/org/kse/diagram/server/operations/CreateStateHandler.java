@@ -54,8 +54,8 @@ public class CreateStateHandler extends StatechartOperationHandler<CreateNodeOpe
 			size = new Bounds(0, 0, Math.max(NEW_COMPOSITE_WIDTH, size.width()), NEW_COMPOSITE_HEIGHT);
 		}
 		double[] origin = state.getLayout().absolute(owner);
-		double x = operation.getLocation().map(point -> point.getX() - origin[0]).orElse(20.0);
-		double y = operation.getLocation().map(point -> point.getY() - origin[1]).orElse(40.0);
+		double x = operation.getLocation().map(point -> coordinate(point.getX()) - origin[0]).orElse(20.0);
+		double y = operation.getLocation().map(point -> coordinate(point.getY()) - origin[1]).orElse(40.0);
 		if (owner instanceof Node) {
 			y = Math.max(y, org.kse.notation.Arrange.HEADER);
 			x = Math.max(x, 4);

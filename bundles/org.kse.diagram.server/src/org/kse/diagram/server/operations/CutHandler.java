@@ -15,7 +15,7 @@ public class CutHandler extends StatechartOperationHandler<CutOperation> {
 	@Override
 	protected Command command(CutOperation operation) {
 		Set<EObject> cut = new LinkedHashSet<>();
-		for (String id : operation.getEditorContext().getSelectedElementIds()) {
+		for (String id : DiagramClipboard.selectedIds(operation.getEditorContext())) {
 			if (state.element(id) instanceof Node node) {
 				cut.add(node);
 			}

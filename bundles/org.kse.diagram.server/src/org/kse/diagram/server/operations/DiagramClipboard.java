@@ -57,6 +57,15 @@ final class DiagramClipboard {
 		return key == null ? null : COPIES.get(key);
 	}
 
+	/**
+	 * The ids selected in the page, none when a client sent no editor context or no selection
+	 * (the page always sends both; without this, such a message failed with a NullPointerException).
+	 */
+	static List<String> selectedIds(org.eclipse.glsp.server.types.EditorContext context) {
+		return context == null || context.getSelectedElementIds() == null ? List.of()
+				: context.getSelectedElementIds().stream().filter(java.util.Objects::nonNull).toList();
+	}
+
 	static void walk(Node node, java.util.function.Consumer<Node> visitor) {
 		visitor.accept(node);
 		for (Node child : node.getChildren()) {

@@ -36,6 +36,18 @@ public class LabelEdits implements LabelEditValidator {
 
 	/** Why the text cannot go into the label, or null. */
 	static String problem(StatechartModelState state, String labelId, String text) {
+		if (text == null) {
+			return "the edit has no text";
+		}
+		// refused here, not only when the model is saved: until then every save failed, for every page of the model
+		for (int i = 0; i < text.length(); i++) {
+			char c = text.charAt(i);
+			if (Character.isHighSurrogate(c) && i + 1 < text.length() && Character.isLowSurrogate(text.charAt(i + 1))) {
+				i++;
+			} else if (!(c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c <= 0xD7FF) || (c >= 0xE000 && c <= 0xFFFD))) {
+				return "the text holds the character U+" + String.format("%04X", (int) c) + ", which a model file cannot hold";
+			}
+		}
 		EObject element = state.element(labelId);
 		if (element instanceof Node node) {
 			String name = text.strip();

@@ -29,11 +29,11 @@ public class PasteHandler extends StatechartOperationHandler<PasteOperation> {
 
 	@Override
 	protected Command command(PasteOperation operation) {
-		DiagramClipboard.Copy copy = DiagramClipboard.get(operation.getClipboardData().get(DiagramClipboard.FORMAT));
+		DiagramClipboard.Copy copy = operation.getClipboardData() == null ? null : DiagramClipboard.get(operation.getClipboardData().get(DiagramClipboard.FORMAT));
 		if (copy == null) {
 			throw refused("nothing to paste: copy states of a KSE diagram first");
 		}
-		List<String> selectedIds = operation.getEditorContext().getSelectedElementIds();
+		List<String> selectedIds = DiagramClipboard.selectedIds(operation.getEditorContext());
 		EObject selected = selectedIds.isEmpty() ? null : state.element(selectedIds.get(0));
 		EObject owner = owner(selected);
 		for (Node copied : copy.fragment().states()) {
@@ -49,7 +49,7 @@ public class PasteHandler extends StatechartOperationHandler<PasteOperation> {
 			DiagramClipboard.walk(top, node -> placed.put(node, bounds.hasNext() ? bounds.next() : null));
 		}
 		placed.values().removeIf(java.util.Objects::isNull);
-		offsetTopStates(pasted.states(), placed, owner, operation.getEditorContext().getLastMousePosition().orElse(null));
+		offsetTopStates(pasted.states(), placed, owner, operation.getEditorContext() == null ? null : operation.getEditorContext().getLastMousePosition().orElse(null));
 		placed.putAll(state.getLayout().grownToHold(owner, pasted.states().stream().map(placed::get).filter(java.util.Objects::nonNull).toList()));
 		CompoundCommand paste = new CompoundCommand(CompoundCommand.MERGE_COMMAND_ALL, "Paste");
 		paste.append(StatechartEdits.paste(state.getDomain(), state.getModel(), pasted));
@@ -77,8 +77,8 @@ public class PasteHandler extends StatechartOperationHandler<PasteOperation> {
 		double dy = 24;
 		if (mouse != null) {
 			double[] origin = state.getLayout().absolute(owner);
-			dx = mouse.getX() - origin[0] - first.x();
-			dy = mouse.getY() - origin[1] - first.y();
+			dx = coordinate(mouse.getX()) - origin[0] - first.x();
+			dy = coordinate(mouse.getY()) - origin[1] - first.y();
 		}
 		for (Node top : tops) {
 			Bounds b = placed.get(top);

@@ -30,6 +30,9 @@ abstract class StatechartOperationHandler<O extends Operation> implements Operat
 
 	@Override
 	public Optional<Command> createCommand(O operation) {
+		if (state.getModel() == null) {
+			throw refused("no model is open: the page asks for one first"); // an edit before requestModel failed on nulls
+		}
 		// the model is read where its owner edits it (a workbench's UI thread)
 		return state.read(() -> {
 			Command command = command(operation);
@@ -56,6 +59,21 @@ abstract class StatechartOperationHandler<O extends Operation> implements Operat
 			return node;
 		}
 		throw refused(id + " is not a state");
+	}
+
+	/** Farther than any drawing goes, near enough that sums of positions and sizes stay finite. */
+	static final double FARTHEST = 1_000_000;
+
+	/**
+	 * A position or size a client sent, refused when it is not a finite number within
+	 * {@link #FARTHEST}: an infinite one (JSON's 1e999) or one whose sums overflow made the
+	 * layout unwritable, so the page got no more graphs and the notation file could not be saved.
+	 */
+	protected static double coordinate(double value) {
+		if (!Double.isFinite(value) || Math.abs(value) > FARTHEST) {
+			throw refused(value + " is not a position or size on the diagram (at most " + (long) FARTHEST + " either way)");
+		}
+		return value;
 	}
 
 	protected static GLSPServerException refused(String message) {
