@@ -139,11 +139,21 @@ editorContext.onModelRootChanged(root => {
         document.body.dataset.kseRevision = String(current);
         if (!shown) {
             shown = true;
-            await dispatcher.dispatch(fitAction(1, false));
+            const restore = takeRestore();
+            if (restore) {
+                await dispatcher.dispatch(SetViewportAction.create(root.id, { scroll: restore.scroll, zoom: restore.zoom }, { animate: false }));
+                await dispatcher.dispatch(SelectAction.setSelection(restore.selection));
+            } else {
+                await dispatcher.dispatch(fitAction(1, false));
+            }
             await nextFrame();
             await nextFrame();
             document.body.dataset.kse = 'ready';
+            document.body.dataset.kseConnection = restore ? 'reconnected' : 'open';
             report({ kind: 'connection', severity: 'NONE', message: '' });
+            if (restore) {
+                report({ kind: 'status', severity: 'OK', message: 'Reconnected to the diagram server' }, 4000);
+            }
             resolveReady();
         }
     });
@@ -359,22 +369,96 @@ function connect(): void {
             });
     });
     socket.addEventListener('close', event => {
-        const reason = event.reason ? `: ${event.reason}` : '';
-        const message = opened
-            ? `Disconnected from the diagram server (${event.code}${reason}). Reload the page to reconnect.`
-            : `Cannot connect to the diagram server (${event.code}${reason}).`;
-        report({ kind: 'connection', severity: 'ERROR', message });
-        document.body.dataset.kseConnection = 'closed';
-        if (!shown) {
-            document.body.dataset.kse = 'error';
+        if (opened && shown) {
+            void reconnect();
+            return;
         }
+        const reason = event.reason ? `: ${event.reason}` : '';
+        report({ kind: 'connection', severity: 'ERROR', message: `Cannot connect to the diagram server (${event.code}${reason}).` });
+        document.body.dataset.kseConnection = 'closed';
+        document.body.dataset.kse = 'error';
     });
+}
+
+/** What a page that reopens after a dropped connection restores, kept for this tab only. */
+interface Restore {
+    scroll: { x: number; y: number };
+    zoom: number;
+    selection: string[];
+}
+
+const restoreKey = `kse-restore:${parameters.model}`;
+
+function sleep(milliseconds: number): Promise<void> {
+    return new Promise(resolve => setTimeout(resolve, milliseconds));
+}
+
+/**
+ * A dropped connection (the server's machine slept, a proxy closed an idle socket, the network
+ * blinked): the server keeps the model with its unsaved edits and its undo history, so the page
+ * waits until the server answers again and opens the model anew, where the user left it. A
+ * server that no longer knows the token was restarted: what it held is gone, and the page says so.
+ */
+async function reconnect(): Promise<void> {
+    document.body.dataset.kseConnection = 'reconnecting';
+    report({ kind: 'connection', severity: 'WARNING', message: 'Connection to the diagram server lost: reconnecting…' });
+    const root = editorContext.modelRoot as GModelRoot;
+    const restore: Restore = {
+        scroll: isViewport(root) ? { ...root.scroll } : { x: 0, y: 0 },
+        zoom: isViewport(root) ? root.zoom : 1,
+        selection: selectionService.getSelectedElementIDs()
+    };
+    for (let attempt = 0; ; attempt++) {
+        await sleep(Math.min(5000, 250 * 2 ** attempt));
+        try {
+            const answer = await fetch(`/models?token=${encodeURIComponent(parameters.token)}`, { cache: 'no-store' });
+            if (answer.ok) {
+                break;
+            }
+            if (answer.status === 403) {
+                document.body.dataset.kseConnection = 'closed';
+                report({
+                    kind: 'connection',
+                    severity: 'ERROR',
+                    message: 'The diagram server was restarted: open the address it printed (edits not saved before it stopped are gone).'
+                });
+                return;
+            }
+        } catch {
+            // the server is not back yet
+        }
+    }
+    sessionStorage.setItem(restoreKey, JSON.stringify(restore));
+    reopening = true;
+    window.location.reload();
+}
+
+/** True while the page reloads itself to reconnect (no question about unsaved edits then: the server keeps them). */
+let reopening = false;
+
+/** The viewport and selection of the page before its connection dropped, once. */
+function takeRestore(): Restore | undefined {
+    const saved = sessionStorage.getItem(restoreKey);
+    sessionStorage.removeItem(restoreKey);
+    try {
+        return saved ? (JSON.parse(saved) as Restore) : undefined;
+    } catch {
+        return undefined;
+    }
 }
 
 // a server error before the first model (e.g. "cannot open …") marks the page as failed
 onStatus(entry => {
     if (!shown && entry.kind === 'message' && (entry.severity === 'ERROR' || entry.severity === 'FATAL')) {
         document.body.dataset.kse = 'error';
+    }
+});
+
+// Closing or leaving a page with unsaved edits asks first; in the workbench its editor asks instead.
+window.addEventListener('beforeunload', event => {
+    if (editorContext.isDirty && !reopening && typeof window.kseHostSelection !== 'function') {
+        event.preventDefault();
+        event.returnValue = '';
     }
 });
 

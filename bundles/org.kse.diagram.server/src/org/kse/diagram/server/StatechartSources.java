@@ -55,6 +55,14 @@ public interface StatechartSources {
 		 */
 		void save(NotationWriter notation) throws IOException;
 
+		/**
+		 * What every page of this statechart shares besides the model (its layout): made once by
+		 * {@code create} where pages share the model, made for each page otherwise.
+		 */
+		default <T> T shared(Class<T> kind, Supplier<T> create) {
+			return create.get();
+		}
+
 		/** Registers what runs after every save of the owner's (say, the tree's Save), until {@link #close()}. */
 		default void onSave(NotationWriter notation) {
 		}

@@ -40,10 +40,14 @@ public class StatechartStorage implements SourceModelStorage {
 			throw new GLSPServerException(e.getMessage(), e);
 		}
 		try {
+			if (state.getSource() != null) {
+				state.getSource().close(); // a page that asks again gives up what it had
+			}
 			StatechartSources.Source source = sources.open(file);
 			Model model = source.model();
-			NotationFiles.Opened opened = NotationFiles.open(file, model);
-			state.open(file, source, DiagramLayout.of(model, opened.notation()));
+			// pages of one file share its layout, so that a move in one shows in the others
+			DiagramLayout layout = source.shared(DiagramLayout.class, () -> DiagramLayout.of(model, NotationFiles.open(file, model).notation()));
+			state.open(file, source, layout);
 			source.onSave(this::writeNotation);
 		} catch (IOException e) {
 			String name = file.startsWith(folder.root()) ? folder.root().relativize(file).toString() : file.getFileName().toString();
@@ -53,6 +57,9 @@ public class StatechartStorage implements SourceModelStorage {
 
 	@Override
 	public void saveSourceModel(SaveModelAction action) {
+		if (state.getSource() == null) {
+			throw new GLSPServerException("no model is open to save"); // not a NullPointerException
+		}
 		try {
 			state.getSource().save(this::writeNotation);
 			state.saveIsDone();

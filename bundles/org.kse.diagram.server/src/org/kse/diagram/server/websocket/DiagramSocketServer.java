@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
 
-import org.eclipse.glsp.server.di.ServerModule;
 import org.eclipse.jetty.ee10.servlet.ServletContextHandler;
 import org.eclipse.jetty.ee10.servlet.ServletHolder;
 import org.eclipse.jetty.ee10.websocket.jakarta.server.config.JakartaWebSocketServletContainerInitializer;
@@ -18,7 +17,7 @@ import org.eclipse.jetty.server.ServerConnector;
 import org.kse.diagram.server.FileSources;
 import org.kse.diagram.server.ServedFolder;
 import org.kse.diagram.server.StatechartSources;
-import org.kse.diagram.server.StatechartDiagramModule;
+import org.kse.diagram.server.StatechartServerModule;
 
 import com.google.inject.Guice;
 import com.google.inject.Injector;
@@ -70,7 +69,7 @@ public final class DiagramSocketServer implements AutoCloseable {
 		String token = Base64.getUrlEncoder().withoutPadding().encodeToString(random);
 		// GLSP binds its server as a singleton that serves one client application: every
 		// connection (a second tab, a second window) gets an injector of its own
-		Supplier<Injector> injectors = () -> Guice.createInjector(new ServerModule().configureDiagramModule(new StatechartDiagramModule(folder, sources)));
+		Supplier<Injector> injectors = () -> Guice.createInjector(new StatechartServerModule(folder, sources));
 		Server jetty = new Server();
 		ServerConnector connector = new ServerConnector(jetty);
 		connector.setHost("127.0.0.1");
