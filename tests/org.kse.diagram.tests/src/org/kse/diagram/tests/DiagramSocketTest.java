@@ -176,4 +176,25 @@ class DiagramSocketTest {
 		one.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
 		two.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
 	}
+
+	/** The status line of a raw HTTP request with the given method and Host header. */
+	private String status(String method, String host) throws java.io.IOException {
+		try (java.net.Socket socket = new java.net.Socket("127.0.0.1", server.port())) {
+			socket.setSoTimeout(10_000);
+			String request = method + " /models?token=" + server.token() + " HTTP/1.1\r\nHost: " + host + "\r\nConnection: close\r\n\r\n";
+			socket.getOutputStream().write(request.getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+			return new java.io.BufferedReader(new java.io.InputStreamReader(socket.getInputStream(), java.nio.charset.StandardCharsets.US_ASCII)).readLine();
+		}
+	}
+
+	/** Issue 14, item 7: DNS rebinding (a foreign Host that resolves to 127.0.0.1) and TRACE are refused. */
+	@Test
+	void onlyRequestsForThisServerAreAnsweredAndTraceIsRefused() throws Exception {
+		int port = server.port();
+		assertTrue(status("GET", "127.0.0.1:" + port).contains(" 200"), "this server by address");
+		assertTrue(status("GET", "localhost:" + port).contains(" 200"), "this server by name");
+		assertTrue(status("GET", "attacker.example:" + port).contains(" 403"), "a rebound name");
+		assertTrue(status("GET", "127.0.0.1:" + (port == 1 ? 2 : port - 1)).contains(" 403"), "another port");
+		assertTrue(status("TRACE", "127.0.0.1:" + port).contains(" 405"), "TRACE");
+	}
 }

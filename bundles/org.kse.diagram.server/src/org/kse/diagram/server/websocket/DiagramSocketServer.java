@@ -12,9 +12,14 @@ import java.util.regex.Pattern;
 import org.eclipse.jetty.ee10.servlet.ServletContextHandler;
 import org.eclipse.jetty.ee10.servlet.ServletHolder;
 import org.eclipse.jetty.ee10.websocket.jakarta.server.config.JakartaWebSocketServletContainerInitializer;
+import org.eclipse.jetty.server.Handler;
+import org.eclipse.jetty.server.Request;
+import org.eclipse.jetty.server.Response;
 import org.eclipse.jetty.server.Server;
 import org.eclipse.jetty.server.ServerConnector;
+import org.eclipse.jetty.util.Callback;
 import org.kse.diagram.server.FileSources;
+import org.kse.diagram.server.Reasons;
 import org.kse.diagram.server.ServedFolder;
 import org.kse.diagram.server.StatechartSources;
 import org.kse.diagram.server.StatechartServerModule;
@@ -77,7 +82,7 @@ public final class DiagramSocketServer implements AutoCloseable {
 		jetty.addConnector(connector);
 		ServletContextHandler context = new ServletContextHandler();
 		context.setContextPath("/");
-		jetty.setHandler(context);
+		jetty.setHandler(new LoopbackGuard(context));
 		ServedFolder served = new ServedFolder(folder);
 		context.addServlet(new ServletHolder(new ModelListServlet(served, token)), "/models");
 		if (pages != null) {
@@ -129,6 +134,39 @@ public final class DiagramSocketServer implements AutoCloseable {
 			// nothing to add: the token travels in the query and is checked when the endpoint opens
 		}
 	}
+
+	/**
+	 * Refuses what a web page from elsewhere could make of a server on loopback: a request whose
+	 * Host is not this server (DNS rebinding: a name of the attacker's that resolves to 127.0.0.1
+	 * makes the browser treat this server as the attacker's site), and TRACE, which would echo the
+	 * request back. Each refusal is one line in the log.
+	 */
+	private static final class LoopbackGuard extends Handler.Wrapper {
+		private static final Pattern LOCAL_HOST = Pattern.compile("(127\\.0\\.0\\.1|localhost|\\[::1\\])(:(\\d+))?");
+
+		LoopbackGuard(Handler handler) {
+			super(handler);
+		}
+
+		@Override
+		public boolean handle(Request request, Response response, Callback callback) throws Exception {
+			if ("TRACE".equalsIgnoreCase(request.getMethod())) {
+				REFUSALS.warn("refused a TRACE request");
+				Response.writeError(request, response, callback, 405, "TRACE is not served");
+				return true;
+			}
+			String host = request.getHeaders().get("Host");
+			var local = host == null ? null : LOCAL_HOST.matcher(host);
+			if (local == null || !local.matches() || (local.group(3) != null && Integer.parseInt(local.group(3)) != Request.getLocalPort(request))) {
+				REFUSALS.warn("refused a request for host " + (host == null ? "(none)" : Reasons.quote(host)) + ": this server answers only to 127.0.0.1 and localhost");
+				Response.writeError(request, response, callback, 403, "this server answers only to 127.0.0.1 and localhost");
+				return true;
+			}
+			return super.handle(request, response, callback);
+		}
+	}
+
+	private static final org.apache.logging.log4j.Logger REFUSALS = org.apache.logging.log4j.LogManager.getLogger("org.kse.diagram");
 
 	private static final Pattern LOCAL_ORIGIN = Pattern.compile("(https?|file)://(127\\.0\\.0\\.1|localhost|\\[::1\\])(:\\d+)?");
 
