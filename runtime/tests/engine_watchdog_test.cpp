@@ -103,14 +103,20 @@ class Watchdog : public ::testing::Test {
   std::shared_ptr<Gate> gate = std::make_shared<Gate>();
   std::shared_ptr<std::atomic<int>> started = Counter();
   std::shared_ptr<std::atomic<int>> returned = Counter();
+
+  /// START -> 'Work', whose activity waits at the gate: the chart most tests watch.
+  BasicState* StubbornWork(Statechart& chart) {
+    auto* start = chart.Add<StartState>("Robot_1", &chart);
+    auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
+    chart.AddTransition(start, work);
+    return work;
+  }
 };
 
 TEST_F(Watchdog, ReportsAnActivityRunningTooLongOnceNamingItsStateAndHowLong) {
   Statechart chart("Robot", hub, Watched(reports, milliseconds(100)));
-  auto* start = chart.Add<StartState>("Robot_1", &chart);
-  auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
+  auto* work = StubbornWork(chart);
   work->SetLabel("0.2");
-  chart.AddTransition(start, work);
   chart.Start();
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }, kLimit));
   const auto began = Clock::now();
@@ -163,9 +169,7 @@ TEST_F(Watchdog, ReportsAGuardThatNeverReturnsOnTheEngineThread) {
 TEST_F(Watchdog, ReportsAnInlineActivityWhileRunUntilStableWaitsForIt) {
   // The simulator's case: the activity runs on the caller's thread, inside RunUntilStable().
   Statechart chart("Robot", hub, Watched(reports, milliseconds(100), true));
-  auto* start = chart.Add<StartState>("Robot_1", &chart);
-  auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
-  chart.AddTransition(start, work);
+  StubbornWork(chart);
   std::thread caller([&] { chart.RunUntilStable(); });
   const bool reported = reports->WaitFor(Kind::Overrun);
   gate->Open();
@@ -212,9 +216,7 @@ TEST_F(Watchdog, AnActivityCanHaveItsOwnLimit) {
   // "Stubborn" may take as long as it likes; the chart's other calls may not.
   Statechart chart("Robot", hub, Watched(reports, milliseconds(100)));
   chart.SetActivityWatchdogLimit("Stubborn", milliseconds(0));
-  auto* start = chart.Add<StartState>("Robot_1", &chart);
-  auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
-  chart.AddTransition(start, work);
+  StubbornWork(chart);
   chart.Start();
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }, kLimit));
   std::this_thread::sleep_for(milliseconds(300));
@@ -252,9 +254,7 @@ TEST_F(Watchdog, IsOnByDefaultWithALimitOfOneSecond) {
   options.reporter = reports->Sink();
   Statechart chart("Robot", hub, options);
   EXPECT_EQ(chart.WatchdogLimit(), milliseconds(1000));
-  auto* start = chart.Add<StartState>("Robot_1", &chart);
-  auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
-  chart.AddTransition(start, work);
+  StubbornWork(chart);
   chart.Start();
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }, kLimit));
   const auto began = Clock::now();
@@ -272,9 +272,7 @@ TEST_F(Watchdog, WithoutAReporterItWritesOnStandardError) {
   Options options = Pooled();
   options.watchdog_limit = milliseconds(50);
   Statechart chart("Robot", hub, options);
-  auto* start = chart.Add<StartState>("Robot_1", &chart);
-  auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
-  chart.AddTransition(start, work);
+  StubbornWork(chart);
   ::testing::internal::CaptureStderr();
   chart.Start();
   const bool reported = WaitUntil([&] { return chart.Overruns() == 1; }, kLimit);
@@ -291,10 +289,8 @@ class StopBound : public Watchdog {};
 
 TEST_F(StopBound, StopReturnsWithinItsLimitWhenAnActivityNeverReturns) {
   Statechart chart("Robot", hub, Watched(reports, milliseconds(0)));
-  auto* start = chart.Add<StartState>("Robot_1", &chart);
-  auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
+  auto* work = StubbornWork(chart);
   work->SetLabel("0.2");
-  chart.AddTransition(start, work);
   chart.Start();
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }, kLimit));
   const auto before = Clock::now();
@@ -349,9 +345,7 @@ TEST_F(StopBound, DestroyingAStatechartWhoseActivityNeverReturnedIsSafe) {
   const auto before = Clock::now();
   {
     Statechart chart("Robot", hub, Watched(reports, milliseconds(0)));
-    auto* start = chart.Add<StartState>("Robot_1", &chart);
-    auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
-    chart.AddTransition(start, work);
+    StubbornWork(chart);
     chart.Start();
     ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }, kLimit));
   }
@@ -390,10 +384,8 @@ TEST_F(StopBound, DestroyingAStatechartWhoseEngineThreadIsStuckInAGuardIsSafe) {
 TEST_F(StopBound, DestroyingAStatechartStuckInAnInlineActivityIsSafe) {
   {
     Statechart chart("Robot", hub, Watched(reports, milliseconds(0), true));
-    auto* start = chart.Add<StartState>("Robot_1", &chart);
-    auto* work = chart.Add<BasicState>("Work", &chart, std::make_unique<StubbornActivity>(gate, started, returned));
+    auto* work = StubbornWork(chart);
     auto* after = chart.Add<BasicState>("After", &chart);
-    chart.AddTransition(start, work);
     chart.AddTransition(work, after);
     chart.Start();
     ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }, kLimit));

@@ -8,7 +8,7 @@
 #   <repository>/kse serve <folder> --pages <repository>/bundles/org.kse.diagram.client/dist
 # Another start command can be given as KSE_SERVE_COMMAND: a script that takes the folder as $1
 # and prints the page URL (with the token), e.g. KSE_SERVE_COMMAND=/tmp/kse-serve-ready.
-# Arguments are passed to node --test (e.g. --test-name-pattern=undo).
+# Arguments are passed to node --test (e.g. --test-name-pattern=undo); test files given run alone.
 set -euo pipefail
 
 here="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)"
@@ -25,14 +25,19 @@ if [ ! -f "$client/dist/index.html" ]; then
   (cd "$client" && npm ci --no-audit --no-fund && npm run build)
 fi
 
-npm ci --no-audit --no-fund
+# installed once per lock file: `npm ci` empties node_modules first, under any run going on beside
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  npm ci --no-audit --no-fund
+fi
 
 mkdir -p target
 rm -rf target/screenshots target/downloads
 folder="$(mktemp -d "${TMPDIR:-/tmp}/kse-e2e-models.XXXXXX")"
 cp "$repository/examples/Goalie/Goalie.stct" "$folder/"
 
-log="$here/target/server.log"
+# KSE_E2E_SERVER_LOG: elsewhere, so that runs in one checkout do not read each other's URL
+log="${KSE_E2E_SERVER_LOG:-$here/target/server.log}"
+export KSE_E2E_SERVER_LOG="$log"
 if [ -n "${KSE_SERVE_COMMAND:-}" ]; then
   setsid bash "$KSE_SERVE_COMMAND" "$folder" >"$log" 2>&1 &
 else
@@ -71,4 +76,27 @@ echo "run.sh: diagram server at ${url%%\?*}, serving $folder"
 
 export KSE_E2E_URL="$url"
 export KSE_E2E_FOLDER="$folder"
-node --test --test-concurrency=1 --test-timeout=180000 "$@" tests/*.test.mjs
+# Test files given (tests/NN-name.test.mjs) run alone; `--script FILE` runs a plain node script
+# (a benchmark) against the server instead; other arguments go to node --test.
+if [ "${1:-}" = --script ]; then
+  node "${@:2}"
+  exit
+fi
+options=()
+files=()
+for argument in "$@"; do
+  case "$argument" in
+    *.mjs) files+=("$argument") ;;
+    *) options+=("$argument") ;;
+  esac
+done
+[ ${#files[@]} -gt 0 ] || files=(tests/*.test.mjs)
+status=0
+node --test --test-concurrency=1 --test-timeout=180000 "${options[@]}" "${files[@]}" || status=$?
+# whatever the tests did, the server answered in messages: a stack trace in its log is a failure
+if grep -n -E -e '^[[:space:]]+at [[:alnum:]_$.]+\(' -e '(Exception|Error)(: |$)' "$log" >"$here/target/server-traces.txt"; then
+  echo "run.sh: the diagram server logged stack traces or exceptions (target/server-traces.txt):" >&2
+  head -n 20 "$here/target/server-traces.txt" >&2
+  status=1
+fi
+exit "$status"

@@ -27,6 +27,7 @@ import {
     configureModelElement,
     createDiagramOptionsModule,
     editLabelFeature,
+    edgeLayoutFeature,
     gridModule,
     helperLineModule,
     initializeDiagramContainer,
@@ -34,8 +35,10 @@ import {
     statusModule
 } from '@eclipse-glsp/client';
 import { Container } from 'inversify';
+import { DISK_CHANGE, DiskChangeHandler } from './disk-changes';
 import { KseExportSvgActionHandler } from './export';
 import { KseHoverMouseListener } from './hover';
+import { kseInteractionModule } from './interaction';
 import { KseEditLabelUI } from './label-editing';
 import { KseModelSource } from './model-source';
 import {
@@ -65,7 +68,11 @@ export const kseDiagramModule = new FeatureModule(
             configureModelElement(context, STATE_PREFIX + kind, kind === 'basic' ? BasicStateNode : StateNode, StateView);
         }
         configureModelElement(context, NAME_LABEL, NameLabel, NameLabelView, { enable: [editLabelFeature], disable: [alignFeature] });
-        configureModelElement(context, EXPRESSION_LABEL, ExpressionLabel, ExpressionLabelView, { enable: [editLabelFeature] });
+        // placed by the server's layout (its top-left corner), neither along the edge nor aligned by the client
+        configureModelElement(context, EXPRESSION_LABEL, ExpressionLabel, ExpressionLabelView, {
+            enable: [editLabelFeature],
+            disable: [alignFeature, edgeLayoutFeature]
+        });
         configureModelElement(context, TRANSITION, TransitionEdge, TransitionView);
 
         // the page's status line shows GLSP's status and messages (instead of the overlay in the diagram)
@@ -76,6 +83,10 @@ export const kseDiagramModule = new FeatureModule(
         // the toolbar's Grid button follows the grid (which the tool palette can switch too)
         bind(GridButtonSync).toSelf().inSingletonScope();
         configureActionHandler(context, ShowGridAction.KIND, GridButtonSync);
+
+        // the model's file changed on disk: reloaded, or the user is asked (a bar over the diagram)
+        bind(DiskChangeHandler).toSelf().inSingletonScope();
+        configureActionHandler(context, DISK_CHANGE, DiskChangeHandler);
 
         // SVG export: saved as <model>.svg; Ctrl+Shift+E exports too
         bind(KseExportSvgActionHandler).toSelf().inSingletonScope();
@@ -102,6 +113,7 @@ export function createKseDiagramContainer(options: IDiagramOptions, viewerOption
         helperLineModule,
         gridModule,
         kseDiagramModule,
+        kseInteractionModule,
         { add: standalone, remove: statusModule }
     );
 }

@@ -5,20 +5,26 @@
  */
 import { GlspEditLabelUI } from '@eclipse-glsp/client';
 import { injectable } from 'inversify';
-import { ExpressionLabel } from './model';
+import { ExpressionLabel, NameLabel } from './model';
+
+/** The labels that show less than what they edit: a first line, a caption. */
+function fullTextOf(label: unknown): string | undefined {
+    return label instanceof ExpressionLabel || label instanceof NameLabel ? label.fullText : undefined;
+}
 
 @injectable()
 export class KseEditLabelUI extends GlspEditLabelUI {
     protected override applyTextContents(): void {
         super.applyTextContents();
-        if (this.label instanceof ExpressionLabel) {
-            this.editControl.value = this.label.fullText;
-            this.previousLabelContent = this.label.fullText;
+        const fullText = fullTextOf(this.label);
+        if (fullText !== undefined) {
+            this.editControl.value = fullText;
+            this.previousLabelContent = fullText;
         }
     }
 
     protected override async applyLabelEdit(): Promise<void> {
-        if (this.isActive && this.label instanceof ExpressionLabel && this.editControl.value === this.label.fullText) {
+        if (this.isActive && fullTextOf(this.label) !== undefined && this.editControl.value === fullTextOf(this.label)) {
             this.hide();
             return;
         }

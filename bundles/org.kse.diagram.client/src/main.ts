@@ -36,11 +36,13 @@ import 'sprotty/css/edit-label.css';
 import { Container } from 'inversify';
 import { createKseDiagramContainer } from './di.config';
 import { Focus, download, pngFileName, setExportBaseName, standaloneSvg, svgFileName, svgToPng } from './export';
-import { DIAGRAM_TYPE, STATE_PREFIX } from './model';
+import { DIAGRAM_TYPE } from './model';
 import { ElementJson, toJson } from './model-json';
 import { newClientId, readPageParameters } from './page';
 import { StatusEntry, onStatus, report, statusHistory } from './status-line';
 import { showGridPressed } from './toolbar-sync';
+import { fitStatesAction, zoomAction } from './viewport';
+import { openingViewportAction } from './readable-viewport';
 import './kse.css';
 
 export interface KseHandle {
@@ -82,6 +84,12 @@ declare global {
          * told the selected ids, as a JSON array, whenever the selection changes.
          */
         kseHostSelection?: (idsJson: string) => unknown;
+        /**
+         * Set by a host that embeds the page: called when the page lost its connection, answers the
+         * address to open the page anew at (on a server it started again if the old one is gone,
+         * maybe on another port), or null when it cannot.
+         */
+        kseHostReconnect?: () => unknown;
     }
 }
 
@@ -144,7 +152,8 @@ editorContext.onModelRootChanged(root => {
                 await dispatcher.dispatch(SetViewportAction.create(root.id, { scroll: restore.scroll, zoom: restore.zoom }, { animate: false }));
                 await dispatcher.dispatch(SelectAction.setSelection(restore.selection));
             } else {
-                await dispatcher.dispatch(fitAction(1, false));
+                const canvas = diagramSvg()?.getBoundingClientRect() ?? { width: window.innerWidth, height: window.innerHeight };
+                await dispatcher.dispatch(openingViewportAction(root, canvas) ?? fitAction(1, false));
             }
             await nextFrame();
             await nextFrame();
@@ -168,14 +177,8 @@ editorContext.onDirtyStateChanged(change => {
     document.querySelector('[data-action="save"]')?.classList.toggle('kse-dirty', change.isDirty);
 });
 
-/**
- * Fits the states into the window. The states are named: with no ids, sprotty's fit takes every
- * element's bounds, edges included, whose bounds are not always valid (then it does nothing).
- */
 function fitAction(maxZoom: number, animate: boolean): FitToScreenAction {
-    const root = editorContext.modelRoot;
-    const ids = root ? root.children.filter(child => child.type.startsWith(STATE_PREFIX)).map(child => child.id) : [];
-    return FitToScreenAction.create(ids, { padding: 24, maxZoom, animate });
+    return fitStatesAction(editorContext.modelRoot, maxZoom, animate);
 }
 
 function diagramSvg(): SVGSVGElement | null {
@@ -227,15 +230,8 @@ async function exportSvg(selected = false): Promise<string> {
 }
 
 function zoomBy(factor: number): Promise<void> {
-    const root = editorContext.modelRoot as GModelRoot;
-    if (!root || !isViewport(root)) {
-        return Promise.resolve();
-    }
-    const canvas = root.canvasBounds;
-    const centre = { x: root.scroll.x + canvas.width / 2 / root.zoom, y: root.scroll.y + canvas.height / 2 / root.zoom };
-    const zoom = Math.min(20, Math.max(0.1, root.zoom * factor));
-    const scroll = { x: centre.x - canvas.width / 2 / zoom, y: centre.y - canvas.height / 2 / zoom };
-    return dispatcher.dispatch(SetViewportAction.create(root.id, { scroll, zoom }, { animate: true }));
+    const action = zoomAction(editorContext.modelRoot, factor);
+    return action ? dispatcher.dispatch(action) : Promise.resolve();
 }
 
 function gridManager(): IGridManager | undefined {
@@ -369,6 +365,17 @@ function connect(): void {
             });
     });
     socket.addEventListener('close', event => {
+        if (event.code === MESSAGE_TOO_BIG) {
+            // the server refused a message of this page as too large: reconnecting would only send it again
+            report({
+                kind: 'connection',
+                severity: 'ERROR',
+                message: `The diagram is too large for the diagram server (${event.reason || 'a message of this page exceeded its limit'}).`
+            });
+            document.body.dataset.kseConnection = 'closed';
+            document.body.dataset.kse = 'error';
+            return;
+        }
         if (opened && shown) {
             void reconnect();
             return;
@@ -380,6 +387,9 @@ function connect(): void {
     });
 }
 
+/** The WebSocket close code of a message larger than the receiver takes (RFC 6455). */
+const MESSAGE_TOO_BIG = 1009;
+
 /** What a page that reopens after a dropped connection restores, kept for this tab only. */
 interface Restore {
     scroll: { x: number; y: number };
@@ -388,6 +398,8 @@ interface Restore {
 }
 
 const restoreKey = `kse-restore:${parameters.model}`;
+/** How a host hands the page what to restore (a reopened page's origin may differ, so its session storage too). */
+const RESTORE_HASH = '#kse-restore=';
 
 function sleep(milliseconds: number): Promise<void> {
     return new Promise(resolve => setTimeout(resolve, milliseconds));
@@ -408,6 +420,10 @@ async function reconnect(): Promise<void> {
         zoom: isViewport(root) ? root.zoom : 1,
         selection: selectionService.getSelectedElementIDs()
     };
+    if (typeof window.kseHostReconnect === 'function') {
+        reopenAt(window.kseHostReconnect(), restore);
+        return;
+    }
     for (let attempt = 0; ; attempt++) {
         await sleep(Math.min(5000, 250 * 2 ** attempt));
         try {
@@ -433,12 +449,36 @@ async function reconnect(): Promise<void> {
     window.location.reload();
 }
 
+/**
+ * Opens the page anew at the address its host gave, with what to restore in the address's fragment
+ * (the new page's origin may differ, and with it its session storage).
+ */
+function reopenAt(address: unknown, restore: Restore): void {
+    if (typeof address !== 'string') {
+        document.body.dataset.kseConnection = 'closed';
+        report({ kind: 'connection', severity: 'ERROR', message: 'The diagram server cannot be reached: close and reopen the editor (its model keeps your edits).' });
+        return;
+    }
+    const target = new URL(address, window.location.href);
+    target.hash = RESTORE_HASH.slice(1) + encodeURIComponent(JSON.stringify(restore));
+    reopening = true;
+    const sameDocument = target.origin + target.pathname + target.search === window.location.origin + window.location.pathname + window.location.search;
+    window.location.href = target.toString();
+    if (sameDocument) {
+        window.location.reload(); // a change of the fragment alone does not load the page
+    }
+}
+
 /** True while the page reloads itself to reconnect (no question about unsaved edits then: the server keeps them). */
 let reopening = false;
 
 /** The viewport and selection of the page before its connection dropped, once. */
 function takeRestore(): Restore | undefined {
-    const saved = sessionStorage.getItem(restoreKey);
+    const fromHost = window.location.hash.startsWith(RESTORE_HASH) ? decodeURIComponent(window.location.hash.slice(RESTORE_HASH.length)) : null;
+    if (fromHost !== null) {
+        history.replaceState(null, '', window.location.pathname + window.location.search);
+    }
+    const saved = fromHost ?? sessionStorage.getItem(restoreKey);
     sessionStorage.removeItem(restoreKey);
     try {
         return saved ? (JSON.parse(saved) as Restore) : undefined;

@@ -71,6 +71,11 @@ export class StateNode extends GNode {
         return stringArg(this, 'label');
     }
 
+    /** The state's name in the model; its box may show a shorter caption (a formula's operators). */
+    get fullName(): string {
+        return stringArg(this, 'name');
+    }
+
     override get anchorKind(): string {
         return this.isRound ? ELLIPTIC_ANCHOR_KIND : RECTANGULAR_ANCHOR_KIND;
     }
@@ -99,6 +104,12 @@ export class NameLabel extends GLabel {
     get isCentred(): boolean {
         const owner = this.owner;
         return owner !== undefined && !owner.isComposite;
+    }
+
+    /** What the editor starts with: the state's name, not the caption shown for a formula. */
+    get fullText(): string {
+        const name = this.owner?.fullName;
+        return name ? name : this.text;
     }
 
     get editControlDimension(): Dimension {

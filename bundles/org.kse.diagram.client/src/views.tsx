@@ -32,6 +32,9 @@ export const NOTATION_COLOURS: Record<StateKind, { fill: string; stroke: string 
 
 const bbox = { [ATTR_BBOX_ELEMENT]: true };
 
+/** The widest character (px) of a hierarchical label: digits and dots at 11px (DejaVu Sans). */
+const HIERARCHICAL_LABEL_CHARACTER_WIDTH = 7;
+
 /** One view for every state kind, so that a state changing its kind keeps its DOM element. */
 @injectable()
 export class StateView extends ShapeView {
@@ -80,13 +83,21 @@ export class StateView extends ShapeView {
             case 'basic':
                 return [<rect {...classes} x={0} y={0} width={width} height={height} rx={8} ry={8} fill={colours.fill} stroke={colours.stroke} stroke-width={1} />];
             case 'or':
-            case 'and':
+            case 'and': {
+                const box = <rect {...classes} x={0} y={0} width={width} height={height} rx={3} ry={3} fill={colours.fill} stroke={colours.stroke} stroke-width={1} />;
+                // the label gives way to the caption in a narrow composite (hovering shows both)
+                const captionRight = 8 + (node.nameLabel?.bounds.width ?? 0) + 10;
+                const labelWidth = node.hierarchicalLabel.length * HIERARCHICAL_LABEL_CHARACTER_WIDTH;
+                if (captionRight + labelWidth > width - 6) {
+                    return [box];
+                }
                 return [
-                    <rect {...classes} x={0} y={0} width={width} height={height} rx={3} ry={3} fill={colours.fill} stroke={colours.stroke} stroke-width={1} />,
+                    box,
                     <text class-kse-hierarchical-label={true} x={Math.max(width - 6, 0)} y={16}>
                         {node.hierarchicalLabel}
                     </text>
                 ];
+            }
             default:
                 return [
                     <rect {...classes} class-kse-unknown={true} x={0} y={0} width={width} height={height} rx={2} ry={2} fill={colours.fill} stroke={colours.stroke} stroke-width={1} stroke-dasharray='4 3' />
@@ -104,10 +115,20 @@ export class NameLabelView extends ShapeView {
     render(label: Readonly<NameLabel>, context: RenderingContext): VNode | undefined {
         const owner = label.owner;
         if (owner !== undefined && owner.isComposite) {
-            return (
+            const caption = (
                 <text class-sprotty-label={true} class-kse-name={true} class-kse-composite-name={true} x={0} y={12}>
                     {label.text}
                 </text>
+            );
+            // a state named after a formula shows the formula; its spelled-out name on hover
+            const fullName = owner.fullName;
+            return fullName && fullName !== label.text ? (
+                <g class-kse-caption={true}>
+                    <title>{fullName}</title>
+                    {caption}
+                </g>
+            ) : (
+                caption
             );
         }
         const position = label.position;
@@ -121,12 +142,16 @@ export class NameLabelView extends ShapeView {
     }
 }
 
-/** The first line of a transition's expression, next to its edge. */
+/**
+ * The first line of a transition's expression, where the server's layout placed it: its position
+ * is the top-left corner of a box kept free of states and other labels (org.kse.notation's
+ * TransitionLayout), so the text hangs from that corner.
+ */
 @injectable()
 export class ExpressionLabelView extends ShapeView {
     render(label: Readonly<ExpressionLabel>, _context: RenderingContext): VNode | undefined {
         return (
-            <text class-sprotty-label={true} class-kse-expression={true}>
+            <text class-sprotty-label={true} class-kse-expression={true} x={2} y={1}>
                 {label.text}
             </text>
         );

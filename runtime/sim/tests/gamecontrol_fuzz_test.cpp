@@ -33,6 +33,7 @@
 #include <kse/sim/GameControllerLink.h>
 #include <kse/sim/Match.h>
 
+#include "loopback_udp.h"
 #include "test_behaviours.h"
 
 using namespace kse::sim;
@@ -188,39 +189,6 @@ private:
 	std::mt19937_64 random_;
 };
 
-class LoopbackSender {
-public:
-	LoopbackSender() : fd_(::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0)) {
-		sockaddr_in address{};
-		address.sin_family = AF_INET;
-		address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-		::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address);
-		socklen_t length = sizeof address;
-		::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length);
-		port_ = ntohs(address.sin_port);
-	}
-	~LoopbackSender() { ::close(fd_); }
-	LoopbackSender(const LoopbackSender&) = delete;
-	LoopbackSender& operator=(const LoopbackSender&) = delete;
-	std::uint16_t Port() const { return port_; }
-	bool SendTo(std::uint16_t port, const Bytes& bytes) const {
-		sockaddr_in to{};
-		to.sin_family = AF_INET;
-		to.sin_port = htons(port);
-		to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-		return ::sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to) == static_cast<ssize_t>(bytes.size());
-	}
-	void Drain() const {
-		std::uint8_t buffer[256];
-		while (::recv(fd_, buffer, sizeof buffer, MSG_DONTWAIT) > 0) {
-		}
-	}
-
-private:
-	int fd_;
-	std::uint16_t port_ = 0;
-};
-
 /** What the link's statistics say about the last datagram. */
 gc::PacketError Verdict(const gc::GameControllerLink::Statistics& before, const gc::GameControllerLink::Statistics& after) {
 	if (after.too_short > before.too_short) return gc::PacketError::TooShort;
@@ -284,7 +252,7 @@ TEST(GameControlFuzz, HostilePacketsNeitherCrashNorUnboundTheMatchNorFloodTheLog
 		config.home.players.push_back({"Chaser", n, std::nullopt, {}});
 		config.away.players.push_back({"Chaser", n, std::nullopt, {}});
 	}
-	const LoopbackSender controller;
+	const test_support::LoopbackUdp controller;
 	gc::GameControllerLink link({"127.0.0.1", 0, controller.Port()});
 	Match match(config);
 	match.Listen(link);

@@ -20,6 +20,7 @@
 #include <kse/sim/GameControllerLink.h>
 #include <kse/sim/Match.h>
 
+#include "loopback_udp.h"
 #include "test_behaviours.h"
 
 using namespace kse::sim;
@@ -29,42 +30,7 @@ namespace {
 constexpr int kHome = 7, kAway = 8;
 constexpr int kTicksPerPacket = 50;  // GameController3 sends twice a second
 
-/** A UDP socket on loopback that plays GameController3 (or someone forging its packets). */
-class UdpSender {
-public:
-	UdpSender() : fd_(::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0)) {
-		sockaddr_in address{};
-		address.sin_family = AF_INET;
-		address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-		::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address);
-		socklen_t length = sizeof address;
-		::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length);
-		port_ = ntohs(address.sin_port);
-	}
-	~UdpSender() { ::close(fd_); }
-	UdpSender(const UdpSender&) = delete;
-	UdpSender& operator=(const UdpSender&) = delete;
-
-	std::uint16_t Port() const { return port_; }
-	void SendTo(std::uint16_t port, const std::vector<std::uint8_t>& bytes) const {
-		sockaddr_in to{};
-		to.sin_family = AF_INET;
-		to.sin_port = htons(port);
-		to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-		ASSERT_EQ(::sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to), static_cast<ssize_t>(bytes.size()));
-	}
-	/** Reads the robots' answers that are waiting, so that they never fill the socket. */
-	int Drain() const {
-		int answers = 0;
-		std::uint8_t buffer[256];
-		while (::recv(fd_, buffer, sizeof buffer, MSG_DONTWAIT) > 0) ++answers;
-		return answers;
-	}
-
-private:
-	int fd_;
-	std::uint16_t port_ = 0;
-};
+using UdpSender = test_support::LoopbackUdp;
 
 /** The packets GameController3 sends for a play-off game of teams 7 (home) and 8 (away), two robots each, and its actions. */
 struct GameController3 {
@@ -149,7 +115,7 @@ public:
 		for (int i = 0; i < copies; ++i) {
 			packet.packetNumber = packet_number_++;
 			const std::uint64_t before = link_.Stats().received;
-			(from ? *from : controller_).SendTo(link_.ListenPort(), gc::Encode(packet));
+			ASSERT_TRUE((from ? *from : controller_).SendTo(link_.ListenPort(), gc::Encode(packet)));
 			const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
 			for (;;) {
 				ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "the link never received the packet";
@@ -407,7 +373,7 @@ TEST(GameControllerGame, IgnoredPacketsAreLoggedOncePerKind) {
 	too_long.resize(3000);
 	const UdpSender sender;
 	for (int i = 0; i < 5; ++i) {
-		for (const auto* datagram : {&wrong_header, &wrong_version, &too_short, &too_long}) sender.SendTo(game.Link().ListenPort(), *datagram);
+		for (const auto* datagram : {&wrong_header, &wrong_version, &too_short, &too_long}) ASSERT_TRUE(sender.SendTo(game.Link().ListenPort(), *datagram));
 	}
 	game.Send(controller.packet, 2);  // behind them in the queue
 	EXPECT_EQ(game.Link().Malformed(), 20u);
@@ -460,7 +426,7 @@ TEST(GameControllerGame, KseMatchFollowsAGameControllerThatSendsInRealTime) {
 		for (std::uint8_t number = 0; !stop; ++number) {
 			gc::GameControlData packet = number < script.size() ? script[number] : game.packet;
 			packet.packetNumber = number;
-			controller.SendTo(link.ListenPort(), gc::Encode(packet));
+			controller.SendTo(link.ListenPort(), gc::Encode(packet));  // a lost datagram is what the link must bear
 			for (int wait = 0; wait < 50 && !stop; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(10));
 		}
 	});

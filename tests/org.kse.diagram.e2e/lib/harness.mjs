@@ -2,7 +2,7 @@
 // the client model (window.kse) and the served folder. run.sh starts the server and passes
 // KSE_E2E_URL (a page URL with the session token) and KSE_E2E_FOLDER (the served folder).
 import { chromium } from 'playwright-core';
-import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -24,11 +24,29 @@ function required(name) {
 
 export const pageUrl = () => required('KSE_E2E_URL');
 export const servedFolder = () => required('KSE_E2E_FOLDER');
+/** What the server printed (run.sh's KSE_E2E_SERVER_LOG). */
+export const serverLog = () => readFileSync(required('KSE_E2E_SERVER_LOG'), 'utf8');
 
 /** A copy of the Goalie example in the served folder, under a name of its own (tests do not share files). */
 export function copyGoalie(name) {
     const file = path.join(servedFolder(), `${name}.stct`);
     copyFileSync(goalieSource, file);
+    return `${name}.stct`;
+}
+
+/**
+ * A copy of a model of the repository (a path relative to it) in the served folder under a name of
+ * its own, with the files that give its layout (the original's .kse diagram, a notation file).
+ */
+export function copyModel(source, name) {
+    const from = path.join(repository, source);
+    const base = from.replace(/\.stct$/, '');
+    copyFileSync(from, path.join(servedFolder(), `${name}.stct`));
+    for (const suffix of ['.kse', '.notation.json']) {
+        if (existsSync(base + suffix)) {
+            copyFileSync(base + suffix, path.join(servedFolder(), name + suffix));
+        }
+    }
     return `${name}.stct`;
 }
 
@@ -65,8 +83,8 @@ export async function launch() {
 const openPages = new Set();
 
 /**
- * Closes the pages a test left open (e.g. when it failed). The server keeps one client
- * application at a time, so a page left open would keep the next test's page from opening.
+ * Closes the pages a test left open (e.g. when it failed): pages of one file share its model on
+ * the server, so a page left open would carry its edits into the next test's page of that file.
  */
 export async function closePages() {
     for (const page of [...openPages]) {
@@ -74,9 +92,14 @@ export async function closePages() {
     }
 }
 
-/** Opens the page of a model (relative to the served folder) and waits until its diagram is shown. */
-export async function openModel(context, model, { expectError = false } = {}) {
-    const url = new URL(pageUrl());
+/**
+ * Opens the page of a model (relative to the served folder) and waits until its diagram is shown;
+ * `through` is another page URL of the server to open it by (a relay's). A page opens at a readable
+ * zoom, showing a large diagram only in part; unless `fit` is false the whole diagram is then
+ * fitted into the window (at most at 100 %), as a user clicking Fit, so that a test reaches every state.
+ */
+export async function openModel(context, model, { expectError = false, through = pageUrl(), fit = true } = {}) {
+    const url = new URL(through);
     url.searchParams.set('model', model);
     const page = await context.newPage();
     const problems = [];
@@ -102,6 +125,14 @@ export async function openModel(context, model, { expectError = false } = {}) {
     if (!expectError && state !== 'ready') {
         const status = await page.locator('#kse-status').innerText();
         throw new Error(`the diagram of ${model} did not open: ${status}`);
+    }
+    if (fit && state === 'ready') {
+        await page.evaluate(async () => {
+            const root = window.kse.modelRoot();
+            const elementIds = root.children.filter(child => child.type.startsWith('state:')).map(child => child.id);
+            await window.kse.dispatch({ kind: 'fit', elementIds, padding: 24, maxZoom: 1, animate: false });
+            await new Promise(resolve => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+        });
     }
     return page;
 }
@@ -139,6 +170,11 @@ export function nameOf(root, stateId) {
 }
 
 export function stateNamed(root, name) {
+    // a state named after a formula shows the formula as caption: its name is its `name` argument
+    const named = states(root).find(state => state.args?.name === name);
+    if (named) {
+        return named;
+    }
     const label = flatten(root).find(element => element.type === 'label:name' && element.text === name);
     return label ? states(root).find(state => state.id === label.parentId) : undefined;
 }
@@ -215,4 +251,23 @@ export function clientKindCounts(root) {
         counts[kind] = (counts[kind] ?? 0) + 1;
     }
     return counts;
+}
+
+/** Scrolls the diagram to put the element in the middle of the window (states out of view are not drawn). */
+export async function centre(page, id) {
+    await page.evaluate(id => window.kse.dispatch({ kind: 'center', elementIds: [id], animate: false, retainZoom: true }), id);
+}
+
+/** Renames a state by editing its name in place, and waits for the model update. */
+export async function renameState(page, from, to) {
+    const state = stateNamed(await modelRoot(page), from);
+    if (!state) {
+        throw new Error(`the model has no state ${from}`);
+    }
+    await centre(page, state.id);
+    await page.locator(`#kse-diagram [id$="${cssString(state.id)}#name"]`).dblclick();
+    const editor = page.locator('.label-edit input');
+    await editor.waitFor({ state: 'visible' });
+    await editor.fill(to);
+    await andUpdate(page, () => editor.press('Enter'));
 }

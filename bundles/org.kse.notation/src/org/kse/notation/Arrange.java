@@ -6,6 +6,7 @@ import java.util.Map;
 
 import org.eclipse.elk.alg.layered.options.LayeredMetaDataProvider;
 import org.eclipse.elk.alg.layered.options.LayeredOptions;
+import org.eclipse.elk.alg.layered.options.NodePlacementStrategy;
 import org.eclipse.elk.core.RecursiveGraphLayoutEngine;
 import org.eclipse.elk.core.data.LayoutMetaDataService;
 import org.eclipse.elk.core.math.ElkPadding;
@@ -15,6 +16,9 @@ import org.eclipse.elk.core.options.EdgeRouting;
 import org.eclipse.elk.core.options.HierarchyHandling;
 import org.eclipse.elk.core.options.SizeConstraint;
 import org.eclipse.elk.core.util.BasicProgressMonitor;
+import org.eclipse.elk.core.options.EdgeLabelPlacement;
+import org.eclipse.elk.graph.ElkEdge;
+import org.eclipse.elk.graph.ElkLabel;
 import org.eclipse.elk.graph.ElkNode;
 import org.eclipse.elk.graph.util.ElkGraphUtil;
 import org.kse.model.NodeKind;
@@ -25,7 +29,10 @@ import org.kse.model.statechart.Transition;
 /**
  * "Arrange all": places every state with ELK's layered algorithm, the whole hierarchy at once
  * (a composite grows around its children, transitions between levels are taken into account),
- * left to right in the order the transitions run.
+ * top to bottom in the order the transitions run. Transition labels take part: the layers leave
+ * room for them, so that {@link TransitionLayout} finds them a free place beside their line. Top to
+ * bottom because a label is wide and one line high: left to right, every label widened its layer
+ * and the Goalie came out 7,000 px wide.
  */
 public final class Arrange {
 
@@ -53,7 +60,16 @@ public final class Arrange {
 			ElkNode source = shapes.get(transition.getSource());
 			ElkNode target = shapes.get(transition.getTarget());
 			if (source != null && target != null) {
-				ElkGraphUtil.updateContainment(ElkGraphUtil.createSimpleEdge(source, target));
+				ElkEdge edge = ElkGraphUtil.createSimpleEdge(source, target);
+				ElkGraphUtil.updateContainment(edge);
+				String text = TransitionLayout.labelText(transition);
+				if (!text.isEmpty()) {
+					// the layers leave room for the label beside its transition
+					Bounds size = TransitionLayout.labelSize(text);
+					ElkLabel label = ElkGraphUtil.createLabel(text, edge);
+					label.setDimensions(size.width(), size.height());
+					label.setProperty(CoreOptions.EDGE_LABELS_PLACEMENT, EdgeLabelPlacement.CENTER);
+				}
 			}
 		}
 		new RecursiveGraphLayoutEngine().layout(graph, new BasicProgressMonitor());
@@ -64,10 +80,14 @@ public final class Arrange {
 
 	private static void configure(ElkNode shape) {
 		shape.setProperty(CoreOptions.ALGORITHM, LayeredOptions.ALGORITHM_ID);
-		shape.setProperty(CoreOptions.DIRECTION, Direction.RIGHT);
+		shape.setProperty(CoreOptions.DIRECTION, Direction.DOWN);
 		shape.setProperty(CoreOptions.EDGE_ROUTING, EdgeRouting.ORTHOGONAL);
 		shape.setProperty(CoreOptions.SPACING_NODE_NODE, 24.0);
 		shape.setProperty(LayeredOptions.SPACING_NODE_NODE_BETWEEN_LAYERS, 36.0);
+		shape.setProperty(LayeredOptions.SPACING_EDGE_LABEL, 6.0);
+		shape.setProperty(LayeredOptions.SPACING_LABEL_NODE, 8.0);
+		// straighter, narrower flows than the default (Brandes-Köpf) for these nested charts
+		shape.setProperty(LayeredOptions.NODE_PLACEMENT_STRATEGY, NodePlacementStrategy.NETWORK_SIMPLEX);
 	}
 
 	private static void add(ElkNode parent, Node node, Map<Node, ElkNode> shapes) {
@@ -87,8 +107,8 @@ public final class Arrange {
 			add(shape, child, shapes);
 		}
 		if (NodeKind.AND.is(node)) {
-			// the regions of an AND state run in parallel: stacked, not in a flow
-			shape.setProperty(CoreOptions.DIRECTION, Direction.DOWN);
+			// the regions of an AND state run in parallel: side by side, not in a flow
+			shape.setProperty(CoreOptions.DIRECTION, Direction.RIGHT);
 		}
 	}
 }

@@ -28,10 +28,10 @@ public final class Shapes {
 		return new Bounds(0, 0, Math.max(72, 7.5 * name.length() + 24), 36);
 	}
 
-	/** A composite's header holds its name (bold) and its label: at least this wide. */
+	/** A composite's header holds its caption (bold) and its label: at least this wide. */
 	public static double headerWidth(Node node) {
-		int name = node.getName() == null ? 0 : node.getName().length();
-		int label = node.getLabel() == null ? 0 : node.getLabel().length();
-		return 8 * name + 6.5 * label + 40;
+		double caption = TextWidth.of(Captions.of(node), 12, true);
+		double label = TextWidth.of(node.getLabel() == null ? "" : node.getLabel(), 11, false);
+		return caption + label + 40;
 	}
 }

@@ -30,11 +30,26 @@ public final class SvgDiagram {
 		for (Node root : model.getNodes()) {
 			place(root, MARGIN, MARGIN, notation, placed, order);
 		}
+		// the layout's coordinates start at the diagram's corner; the picture keeps a margin round them
+		Map<Transition, TransitionLayout.Placed> routes = TransitionLayout.of(model, node -> {
+			Bounds relative = notation.get(node);
+			return relative != null ? relative : Shapes.size(node);
+		});
 		double width = MARGIN;
 		double height = MARGIN;
 		for (Bounds bounds : placed.values()) {
 			width = Math.max(width, bounds.right() + MARGIN);
 			height = Math.max(height, bounds.bottom() + MARGIN);
+		}
+		for (TransitionLayout.Placed route : routes.values()) {
+			if (route.label() != null) {
+				width = Math.max(width, route.label().right() + 2 * MARGIN);
+				height = Math.max(height, route.label().bottom() + 2 * MARGIN);
+			}
+			for (double[] bend : route.bends()) {
+				width = Math.max(width, bend[0] + 2 * MARGIN);
+				height = Math.max(height, bend[1] + 2 * MARGIN);
+			}
 		}
 		StringBuilder svg = new StringBuilder();
 		svg.append(String.format(Locale.ROOT, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
@@ -46,13 +61,7 @@ public final class SvgDiagram {
 		for (Node node : order) {
 			state(svg, node, placed.get(node));
 		}
-		for (Transition transition : model.getTransitions()) {
-			Bounds source = placed.get(transition.getSource());
-			Bounds target = placed.get(transition.getTarget());
-			if (source != null && target != null) {
-				transition(svg, transition, source, target);
-			}
-		}
+		routes.forEach((transition, route) -> transition(svg, transition, route, placed.get(transition.getSource()), placed.get(transition.getTarget())));
 		svg.append("</svg>\n");
 		return svg.toString();
 	}
@@ -94,55 +103,35 @@ public final class SvgDiagram {
 		} else {
 			boolean and = kind == NodeKind.AND;
 			svg.append(String.format(Locale.ROOT, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" rx=\"3\" fill=\"%s\" stroke=\"%s\"/>"
-					+ "<text x=\"%.1f\" y=\"%.1f\" font-weight=\"bold\">%s</text><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#666\" font-size=\"10\">%s</text>",
+					+ "<text x=\"%.1f\" y=\"%.1f\" font-weight=\"bold\">%s</text><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#666\" font-size=\"11\">%s</text>",
 					b.x(), b.y(), b.width(), b.height(), and ? "#d8ecff" : "#fff5c2", and ? "#4a7fb0" : "#a68b22", b.x() + 8, b.y() + 18,
-					escape(node.getName()), b.right() - 6, b.y() + 16, escape(node.getLabel())));
+					escape(Captions.of(node)), b.right() - 6, b.y() + 16, escape(node.getLabel())));
 		}
 		svg.append("</g>\n");
 	}
 
-	private static void transition(StringBuilder svg, Transition transition, Bounds source, Bounds target) {
+	private static void transition(StringBuilder svg, Transition transition, TransitionLayout.Placed route, Bounds source, Bounds target) {
 		String expression = transition.getTE() == null ? "" : transition.getTE().strip();
-		String firstLine = expression.lines().findFirst().orElse("").strip();
-		if (expression.lines().count() > 1) {
-			firstLine += " …";
-		}
 		svg.append("<g class=\"transition\"><title>").append(escape(transition.getName()))
 				.append(expression.isEmpty() ? "" : ": " + escape(expression)).append("</title>");
-		double labelX;
-		double labelY;
-		if (source == target) {
-			double x = source.right() - Math.min(12, source.width() / 4);
-			double y = source.y();
-			svg.append(String.format(Locale.ROOT, "<path d=\"M%.1f,%.1f C%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"none\" stroke=\"#333\" marker-end=\"url(#arrow)\"/>",
-					x - 10, y, x - 10, y - 28, source.right() + 24, y + 4, source.right(), y + Math.min(14, source.height() / 2)));
-			labelX = source.right() + 4;
-			labelY = y - 16;
-		} else {
-			double[] from = border(source, target.x() + target.width() / 2, target.y() + target.height() / 2);
-			double[] to = border(target, source.x() + source.width() / 2, source.y() + source.height() / 2);
-			svg.append(String.format(Locale.ROOT, "<path d=\"M%.1f,%.1f L%.1f,%.1f\" fill=\"none\" stroke=\"#333\" marker-end=\"url(#arrow)\"/>", from[0],
-					from[1], to[0], to[1]));
-			labelX = (from[0] + to[0]) / 2 + 4;
-			labelY = (from[1] + to[1]) / 2 - 4;
+		java.util.List<double[]> bends = route.bends().stream().map(bend -> new double[] { bend[0] + MARGIN, bend[1] + MARGIN }).toList();
+		double[] first = bends.isEmpty() ? new double[] { target.x() + target.width() / 2, target.y() + target.height() / 2 } : bends.get(0);
+		double[] last = bends.isEmpty() ? new double[] { source.x() + source.width() / 2, source.y() + source.height() / 2 } : bends.get(bends.size() - 1);
+		StringBuilder path = new StringBuilder();
+		double[] from = TransitionLayout.border(source, first);
+		path.append(String.format(Locale.ROOT, "M%.1f,%.1f", from[0], from[1]));
+		for (double[] bend : bends) {
+			path.append(String.format(Locale.ROOT, " L%.1f,%.1f", bend[0], bend[1]));
 		}
-		if (!firstLine.isEmpty()) {
-			svg.append(String.format(Locale.ROOT, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"#333\">%s</text>", labelX, labelY, escape(firstLine)));
+		double[] to = TransitionLayout.border(target, last);
+		path.append(String.format(Locale.ROOT, " L%.1f,%.1f", to[0], to[1]));
+		svg.append("<path d=\"").append(path).append("\" fill=\"none\" stroke=\"#333\" marker-end=\"url(#arrow)\"/>");
+		if (route.label() != null) {
+			Bounds label = route.label();
+			svg.append(String.format(Locale.ROOT, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.0f\" fill=\"#333\" dominant-baseline=\"text-before-edge\">%s</text>",
+					label.x() + MARGIN + 2, label.y() + MARGIN + 1, TransitionLayout.LABEL_FONT_SIZE, escape(route.text())));
 		}
 		svg.append("</g>\n");
-	}
-
-	/** Where the line from the centre of a box towards a point leaves the box. */
-	private static double[] border(Bounds box, double towardX, double towardY) {
-		double cx = box.x() + box.width() / 2;
-		double cy = box.y() + box.height() / 2;
-		double dx = towardX - cx;
-		double dy = towardY - cy;
-		if (dx == 0 && dy == 0) {
-			return new double[] { cx, cy };
-		}
-		double scale = 1 / Math.max(Math.abs(dx) / (box.width() / 2), Math.abs(dy) / (box.height() / 2));
-		return new double[] { cx + dx * scale, cy + dy * scale };
 	}
 
 	private static String escape(String text) {

@@ -71,6 +71,26 @@ public class StatechartDiagramConfiguration implements DiagramConfiguration {
 		return List.of(new EdgeTypeHint(StatechartGraph.TRANSITION, false, true, true, sources, targets));
 	}
 
+	/**
+	 * Updates are drawn at once. GLSP animates every update by default: a state dropped after a
+	 * drag slid back from where it had been for a third of a second, and each edit took that long
+	 * to show (in a large diagram, longer: every element is interpolated).
+	 */
+	@Override
+	public boolean animatedUpdate() {
+		return false;
+	}
+
+	/**
+	 * The server sizes every label (TextWidth) and the page draws names from their state's size,
+	 * so the page has nothing to measure: each update is drawn as it arrives, without the round
+	 * trip of the client's bounds, which doubled the wait after every edit of a large model.
+	 */
+	@Override
+	public boolean needsClientLayout() {
+		return false;
+	}
+
 	@Override
 	public Optional<GraphExtension> getGraphExtension() {
 		return Optional.empty();

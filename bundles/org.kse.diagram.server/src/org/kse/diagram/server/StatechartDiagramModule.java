@@ -105,6 +105,8 @@ public class StatechartDiagramModule extends DiagramModule {
 		super.configureActionHandlers(bindings);
 		bindings.add(ClipboardDataHandler.class);
 		bindings.add(ExternalChangeHandler.class);
+		bindings.add(DiskChanges.FileChangedHandler.class);
+		bindings.add(DiskChanges.ResolveHandler.class);
 	}
 
 	@Override

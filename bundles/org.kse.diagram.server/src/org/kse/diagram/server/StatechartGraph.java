@@ -11,7 +11,6 @@ import org.eclipse.glsp.graph.GGraph;
 import org.eclipse.glsp.graph.GModelElement;
 import org.eclipse.glsp.graph.GNode;
 import org.eclipse.glsp.graph.builder.impl.GEdgeBuilder;
-import org.eclipse.glsp.graph.builder.impl.GEdgePlacementBuilder;
 import org.eclipse.glsp.graph.builder.impl.GGraphBuilder;
 import org.eclipse.glsp.graph.builder.impl.GLabelBuilder;
 import org.eclipse.glsp.graph.builder.impl.GNodeBuilder;
@@ -20,14 +19,19 @@ import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 import org.kse.notation.Bounds;
+import org.kse.notation.Captions;
 import org.kse.notation.Notation;
 import org.kse.notation.Shapes;
+import org.kse.notation.TextWidth;
+import org.kse.notation.TransitionLayout;
 
 /**
  * The statechart as the diagram's graph: a node per state, typed by its kind ({@code state:basic},
  * {@code state:or}, …) so that the client draws the thesis' notation, with its children nested
- * inside it at the notation's positions, and an edge per transition labelled with the first line
- * of its expression (all of it is the edge's {@code expression} argument, shown on hover).
+ * inside it at the notation's positions, and an edge per transition, routed and labelled with the
+ * first line of its expression by {@link TransitionLayout} (all of the expression is the edge's
+ * {@code expression} argument, shown on hover). A state named after a formula shows the formula
+ * ({@link Captions}); its name is its {@code name} argument.
  * Element ids are the elements' paths in the model file, the keys of the notation too.
  */
 public final class StatechartGraph {
@@ -48,6 +52,8 @@ public final class StatechartGraph {
 
 	/** The id of the graph's root, which stands for the model. */
 	public static final String ROOT = "statechart";
+	/** The font sizes (px) the page draws names in (kse.css): a BASIC or CONDITION state's, a composite's caption. */
+	private static final double NAME_SIZE = 12, COMPOSITE_NAME_SIZE = 12;
 
 	public static GGraph of(Model model, Notation notation) {
 		return of(model, node -> {
@@ -63,10 +69,12 @@ public final class StatechartGraph {
 		for (Node root : model.getNodes()) {
 			graph.add(state(root, bounds, ids));
 		}
+		Map<Transition, TransitionLayout.Placed> routes = TransitionLayout.of(model, bounds);
 		for (int i = 0; i < model.getTransitions().size(); i++) {
 			Transition transition = model.getTransitions().get(i);
-			if (transition.getSource() != null && transition.getTarget() != null) {
-				graph.add(transition(transition, i));
+			TransitionLayout.Placed route = routes.get(transition);
+			if (route != null) {
+				graph.add(transition(transition, i, route));
 				ids.put("//@transitions." + i, transition);
 			}
 		}
@@ -80,15 +88,17 @@ public final class StatechartGraph {
 		ids.put(id, node);
 		GNodeBuilder shape = new GNodeBuilder(type(kind)).id(id).position(bounds.x(), bounds.y()).size(bounds.width(), bounds.height())
 				.addCssClass("kse-" + (kind == null ? "unknown" : kind.name().toLowerCase(Locale.ROOT)))
-				.addArgument("label", node.getLabel() == null ? "" : node.getLabel());
+				.addArgument("label", node.getLabel() == null ? "" : node.getLabel())
+				.addArgument("name", node.getName() == null ? "" : node.getName());
 		if (kind != NodeKind.START && kind != NodeKind.END) {
 			boolean composite = !node.getChildren().isEmpty() || kind == NodeKind.OR || kind == NodeKind.AND;
-			String text = kind == NodeKind.CONDITION ? "C" : node.getName() == null ? "" : node.getName();
+			String text = kind == NodeKind.CONDITION ? "C" : Captions.of(node);
 			GLabelBuilder name = new GLabelBuilder(NAME).id(id + "#name").text(text);
+			// sized here, as the client would measure it: the client then has nothing to measure before it draws
 			if (composite) {
-				name.position(8, 6);
+				name.position(8, 6).size(TextWidth.of(text, COMPOSITE_NAME_SIZE, true), COMPOSITE_NAME_SIZE + 4);
 			} else {
-				name.position(bounds.width() / 2, bounds.height() / 2).alignment(0.5, 0.5);
+				name.position(bounds.width() / 2, bounds.height() / 2).alignment(0.5, 0.5).size(TextWidth.of(text, NAME_SIZE, false), NAME_SIZE + 4);
 			}
 			shape.add(name.build());
 		}
@@ -98,16 +108,20 @@ public final class StatechartGraph {
 		return shape.build();
 	}
 
-	private static GEdge transition(Transition transition, int index) {
+	/** A transition along its route, its label where the route placed it (both in diagram coordinates). */
+	private static GEdge transition(Transition transition, int index, TransitionLayout.Placed route) {
 		String id = "//@transitions." + index;
 		String expression = transition.getTE() == null ? "" : transition.getTE().strip();
-		String firstLine = expression.lines().findFirst().orElse("").strip() + (expression.lines().count() > 1 ? " …" : "");
 		GEdgeBuilder edge = new GEdgeBuilder(TRANSITION).id(id).sourceId(Notation.path(transition.getSource()))
 				.targetId(Notation.path(transition.getTarget())).addArgument("expression", expression)
 				.addArgument("name", transition.getName() == null ? "" : transition.getName());
-		if (!firstLine.isEmpty()) {
-			edge.add(new GLabelBuilder(EXPRESSION).id(id + "#expression").text(firstLine)
-					.edgePlacement(new GEdgePlacementBuilder().side("top").position(0.5).offset(4).rotate(false).build()).build());
+		for (double[] bend : route.bends()) {
+			edge.addRoutingPoint(bend[0], bend[1]);
+		}
+		if (route.label() != null) {
+			Bounds label = route.label();
+			edge.add(new GLabelBuilder(EXPRESSION).id(id + "#expression").text(route.text()).position(label.x(), label.y())
+					.size(label.width(), label.height()).build());
 		}
 		return edge.build();
 	}

@@ -56,6 +56,17 @@ public class StatechartModelState extends DefaultGModelState {
 	}
 
 	/**
+	 * Takes up the stack without touching the one before. GLSP's flushes the previous stack, but
+	 * that stack is the file's, shared with the other pages (and with the page that comes back
+	 * after a dropped connection): a page asking for its model again wiped every page's undo
+	 * history and made unsaved edits look saved.
+	 */
+	@Override
+	protected void setCommandStack(org.eclipse.emf.common.command.CommandStack stack) {
+		commandStack = stack;
+	}
+
+	/**
 	 * Reads the model where it may be read ({@link StatechartSources.Source#access}: a workbench's
 	 * UI thread, which edits it too), and returns what {@code reading} returns.
 	 */

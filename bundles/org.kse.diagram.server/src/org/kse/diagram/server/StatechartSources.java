@@ -32,6 +32,24 @@ public interface StatechartSources {
 		void write() throws IOException;
 	}
 
+	/** What happened to the file under a model while pages show it. */
+	enum DiskChange {
+		/** Another program changed the file and nobody had unsaved edits: the model was read again. */
+		RELOADED,
+		/** Another program changed the file while the model has unsaved edits: the user chooses. */
+		CONFLICT,
+		/** The file was changed but cannot be read (or is gone): the model is kept, the user chooses. */
+		UNREADABLE,
+		/** A page chose to keep the edits: the next save overwrites the file. */
+		KEPT
+	}
+
+	/** Told of a change on disk; {@code detail} says why the file cannot be read (null otherwise). */
+	@FunctionalInterface
+	interface DiskListener {
+		void changed(DiskChange change, String detail);
+	}
+
 	/** One opened statechart. */
 	interface Source {
 
@@ -65,6 +83,23 @@ public interface StatechartSources {
 
 		/** Registers what runs after every save of the owner's (say, the tree's Save), until {@link #close()}. */
 		default void onSave(NotationWriter notation) {
+		}
+
+		/**
+		 * Registers what a page is told when another program changes the file, until
+		 * {@link #close()}; told at once of a change still waiting for a choice. A source whose owner
+		 * watches the file itself (an editor) tells nothing.
+		 */
+		default void onDiskChange(DiskListener listener) {
+		}
+
+		/** The user's choice after a change on disk: the unsaved edits are dropped and the file read again, for every page. */
+		default void reload() throws IOException {
+			throw new IOException("the editor that holds this model reads it again");
+		}
+
+		/** The user's choice after a change on disk: the edits are kept, and the next save overwrites the file. */
+		default void keepEdits() {
 		}
 
 		/** The session ends. */

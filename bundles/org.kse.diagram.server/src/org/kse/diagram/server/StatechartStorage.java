@@ -3,6 +3,8 @@ package org.kse.diagram.server;
 import java.io.IOException;
 import java.nio.file.Path;
 
+import org.apache.logging.log4j.LogManager;
+import org.apache.logging.log4j.Logger;
 import org.eclipse.glsp.server.actions.SaveModelAction;
 import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.features.core.model.SourceModelStorage;
@@ -18,6 +20,8 @@ import com.google.inject.Inject;
  * saves both atomically.
  */
 public class StatechartStorage implements SourceModelStorage {
+
+	private static final Logger LOG = LogManager.getLogger("org.kse.diagram");
 
 	@Inject
 	private StatechartModelState state;
@@ -44,15 +48,31 @@ public class StatechartStorage implements SourceModelStorage {
 				state.getSource().close(); // a page that asks again gives up what it had
 			}
 			StatechartSources.Source source = sources.open(file);
-			Model model = source.model();
-			// pages of one file share its layout, so that a move in one shows in the others
-			DiagramLayout layout = source.shared(DiagramLayout.class, () -> DiagramLayout.of(model, NotationFiles.open(file, model).notation()));
-			state.open(file, source, layout);
+			state.open(file, source, layoutOf(file, source));
 			source.onSave(this::writeNotation);
+			source.onDiskChange((change, detail) -> actions.dispatch(new DiskChanges.FileChangedAction(change, detail)).exceptionally(failure -> {
+				// nobody waits for this action: its failure is said here or nowhere
+				LOG.warn("showing a change of " + file.getFileName() + " on disk failed: " + Reasons.of(Reasons.unwrap(failure)));
+				return null;
+			}));
 		} catch (IOException e) {
 			String name = file.startsWith(folder.root()) ? folder.root().relativize(file).toString() : file.getFileName().toString();
 			throw new GLSPServerException("cannot open " + name + ": " + e.getMessage(), e);
 		}
+	}
+
+	/** Pages of one file share its layout, so that a move in one shows in the others. */
+	private static DiagramLayout layoutOf(Path file, StatechartSources.Source source) {
+		Model model = source.model();
+		return source.shared(DiagramLayout.class, () -> DiagramLayout.of(model, NotationFiles.open(file, model).notation()));
+	}
+
+	/** Takes up the model its source holds now (read again from the file), with its layout. */
+	public void reopen() {
+		state.read(() -> {
+			state.open(state.getFile(), state.getSource(), layoutOf(state.getFile(), state.getSource()));
+			return null;
+		});
 	}
 
 	@Override

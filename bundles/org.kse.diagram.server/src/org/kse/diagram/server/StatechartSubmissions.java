@@ -6,7 +6,6 @@ import org.eclipse.emf.common.command.CommandStackListener;
 import org.eclipse.glsp.server.actions.Action;
 import org.eclipse.glsp.server.di.ClientId;
 import org.eclipse.glsp.server.features.core.model.ModelSubmissionHandler;
-import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.session.ClientSession;
 import org.eclipse.glsp.server.session.ClientSessionListener;
 import org.eclipse.glsp.server.session.ClientSessionManager;
@@ -48,29 +47,27 @@ public class StatechartSubmissions extends ModelSubmissionHandler implements Cli
 
 	/**
 	 * The command stack the session listens to. A session may ask for a model again (a page
-	 * reloads, a client repeats itself): it listens once, to the stack of the model it has now.
-	 * Added at each request, the listeners piled up on a stack that pages share, and outlived their
-	 * session: every later edit dispatched to stopped sessions (the diagram fuzz suite found it).
+	 * reloads, a client repeats itself), and its file may be read again (changed on disk): it
+	 * listens once, to the stack of the model it shows now. Added at each request, the listeners
+	 * piled up on a stack that pages share, and outlived their session: every later edit
+	 * dispatched to stopped sessions (the diagram fuzz suite found it).
 	 */
 	private org.eclipse.emf.common.command.CommandStack listened;
 
 	@Override
-	public List<Action> submitInitialModel(RequestModelAction requestAction) {
-		List<Action> actions = super.submitInitialModel(requestAction);
-		org.eclipse.emf.common.command.CommandStack stack = state.getDomain().getCommandStack();
+	public List<Action> submitModel(String reason) {
+		List<Action> actions = state.read(() -> super.submitModel(reason));
+		org.eclipse.emf.common.command.CommandStack stack = state.getDomain() == null ? null : state.getDomain().getCommandStack();
 		if (listened != stack) {
 			if (listened != null) {
 				listened.removeCommandStackListener(externalChanges);
 			}
-			stack.addCommandStackListener(externalChanges);
+			if (stack != null) {
+				stack.addCommandStackListener(externalChanges);
+			}
 			listened = stack;
 		}
 		return actions;
-	}
-
-	@Override
-	public List<Action> submitModel(String reason) {
-		return state.read(() -> super.submitModel(reason));
 	}
 
 	@Override

@@ -193,6 +193,41 @@ class DiagramEditingTest {
 	}
 
 	@Test
+	void aStateDroppedOverTheBorderOfItsNewCompositeLandsInsideWithItsTransitionsAndOneUndoTakesItBack() throws Exception {
+		graph = session.graphAfter(create("state:or", StatechartGraph.ROOT, 900, 40));
+		String scan = PLAYING + "/@Children.2/@Children.1";
+		long attached = edgesTouching(graph, scan);
+		assertTrue(attached > 0, "Scan has transitions");
+		// grabbed in its middle, its corner lies left of and above the composite
+		graph = session.graphAfter(new ChangeContainerOperation(scan, GraphUtil.point(880, 20), "//@nodes.1"));
+		GNode moved = node(graph, "//@nodes.1/@Children.0");
+		assertEquals("Scan", ((org.eclipse.glsp.graph.GLabel) StatechartGraph.find(graph, moved.getId() + "#name")).getText());
+		assertEquals(4, moved.getPosition().getX(), 0.1, "inside the composite's left border");
+		assertEquals(org.kse.notation.Arrange.HEADER, moved.getPosition().getY(), 0.1, "below the composite's header");
+		assertEquals(attached, edgesTouching(graph, moved.getId()), "its transitions come along");
+		graph = session.graphAfter(new UndoAction());
+		assertEquals("state:basic", node(graph, scan).getType(), "one undo puts it back");
+		assertEquals(attached, edgesTouching(graph, scan));
+		assertTrue(node(graph, "//@nodes.1").getChildren().stream().noneMatch(GNode.class::isInstance), "and empties the composite");
+	}
+
+	@Test
+	void aStateIsNotDroppedIntoAStateThatCannotHoldIt() throws Exception {
+		String scan = PLAYING + "/@Children.2/@Children.1";
+		String kick = PLAYING + "/@Children.4";
+		assertTrue(session.refusal(new ChangeContainerOperation(scan, GraphUtil.point(10, 10), kick)).contains("cannot hold other states"));
+		graph = session.graphAfter(create("state:and", StatechartGraph.ROOT, 900, 40));
+		assertTrue(session.refusal(new ChangeContainerOperation(scan, GraphUtil.point(920, 80), "//@nodes.1")).contains("only OR regions"));
+		graph = session.graphAfter(new ChangeContainerOperation(PLAYING + "/@Children.2", GraphUtil.point(920, 80), "//@nodes.1"));
+		assertEquals("state:or", node(graph, "//@nodes.1/@Children.0").getType(), "an OR state goes into an AND state");
+	}
+
+	private static long edgesTouching(GGraph graph, String stateId) {
+		return graph.getChildren().stream().filter(org.eclipse.glsp.graph.GEdge.class::isInstance).map(org.eclipse.glsp.graph.GEdge.class::cast)
+				.filter(edge -> stateId.equals(edge.getSourceId()) || stateId.equals(edge.getTargetId())).count();
+	}
+
+	@Test
 	void deletingAStateDeletesItsInsidesAndEveryTransitionAttached() throws Exception {
 		Model before = StatechartResources.load(folder.resolve("Goalie.stct"));
 		Node playing = before.getNodes().get(0).getChildren().get(1).getChildren().get(1).getChildren().get(2);

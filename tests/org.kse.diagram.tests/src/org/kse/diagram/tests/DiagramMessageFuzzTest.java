@@ -6,12 +6,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
-import java.net.InetAddress;
-import java.net.Proxy;
-import java.net.ProxySelector;
-import java.net.ServerSocket;
-import java.net.SocketAddress;
-import java.net.URI;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
@@ -21,7 +15,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Random;
 import java.util.TreeMap;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
@@ -34,6 +27,7 @@ import org.junit.jupiter.api.Test;
 import org.kse.diagram.server.websocket.DiagramSocketServer;
 import org.kse.model.StatechartResources;
 import org.kse.notation.NotationFiles;
+import org.kse.testing.NetworkTrap;
 
 import com.google.gson.JsonObject;
 
@@ -117,7 +111,7 @@ class DiagramMessageFuzzTest {
 		String choices = "";
 		byte[] stretch = goalie;
 		java.util.PriorityQueue<long[]> slowest = new java.util.PriorityQueue<>(java.util.Comparator.comparingLong(each -> each[0]));
-		try (Terminal terminal = new Terminal(); Network network = new Network();
+		try (Terminal terminal = new Terminal(); NetworkTrap network = new NetworkTrap();
 				DiagramSocketServer server = DiagramSocketServer.start(served, 0)) {
 			Choices random = new Choices(SEED);
 			DiagramMessages messages = new DiagramMessages(random, served, outside.resolve("Outside.stct"), network.remote());
@@ -177,7 +171,7 @@ class DiagramMessageFuzzTest {
 			for (String model : List.of("Goalie.stct", "sub/Attacker.stct")) {
 				StringBuilder graph = new StringBuilder();
 				try (FuzzClient normal = new FuzzClient(server.uri(), full -> {
-					if (full.contains("\"requestBounds\"")) {
+					if (FuzzClient.isGraph(full)) {
 						graph.append(full);
 					}
 				})) {
@@ -539,71 +533,6 @@ class DiagramMessageFuzzTest {
 			for (Handler handler : handlers) {
 				root.addHandler(handler);
 			}
-		}
-	}
-
-	/**
-	 * The network as hostile messages could make the server reach it: an address that answers
-	 * nothing and counts connections, and a proxy selector that sees every URL connection.
-	 */
-	private static final class Network implements AutoCloseable {
-		private final ServerSocket trap = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-		private final AtomicInteger connections = new AtomicInteger();
-		private final ProxySelector previous = ProxySelector.getDefault();
-		private final List<String> looked = new ArrayList<>();
-
-		Network() throws IOException {
-			Thread listener = new Thread(() -> {
-				while (!trap.isClosed()) {
-					try {
-						trap.accept().close();
-						connections.incrementAndGet();
-					} catch (IOException closed) {
-						return;
-					}
-				}
-			}, "kse-fuzz-trap");
-			listener.setDaemon(true);
-			listener.start();
-			ProxySelector.setDefault(new ProxySelector() {
-				@Override
-				public List<Proxy> select(URI uri) {
-					synchronized (looked) {
-						looked.add(String.valueOf(uri));
-					}
-					return List.of(Proxy.NO_PROXY);
-				}
-
-				@Override
-				public void connectFailed(URI uri, SocketAddress address, IOException e) {
-				}
-			});
-		}
-
-		String remote() {
-			return "http://127.0.0.1:" + port();
-		}
-
-		String port() {
-			return String.valueOf(trap.getLocalPort());
-		}
-
-		/** What reached for the network since the last call, or null. */
-		String take() {
-			synchronized (looked) {
-				if (connections.get() == 0 && looked.isEmpty()) {
-					return null;
-				}
-				String reached = "reached for the network (" + connections.getAndSet(0) + " connections, URLs " + looked + ")";
-				looked.clear();
-				return reached;
-			}
-		}
-
-		@Override
-		public void close() throws IOException {
-			ProxySelector.setDefault(previous);
-			trap.close();
 		}
 	}
 }

@@ -10,6 +10,8 @@ import java.util.Map;
 import java.util.Random;
 import java.util.function.Supplier;
 
+import org.kse.testing.ByteMutator;
+
 import com.google.gson.JsonArray;
 import com.google.gson.JsonElement;
 import com.google.gson.JsonNull;
@@ -44,6 +46,7 @@ final class DiagramMessages {
 			"$/cancelRequest", "$/setTrace", "rpc.discover", "noSuchMethod", "");
 
 	private final Random random;
+	private final ByteMutator bytes;
 	private final List<String> uris;
 	/** The ids of the diagram's elements, as the server last drew them. */
 	private final List<String> ids = new ArrayList<>(List.of("statechart", "//@nodes.0", "//@nodes.0/@Children.0", "//@transitions.0"));
@@ -57,6 +60,7 @@ final class DiagramMessages {
 	 */
 	DiagramMessages(Random random, Path served, Path outside, String remote) {
 		this.random = random;
+		this.bytes = new ByteMutator(random, WORDS);
 		String out = outside.toString();
 		uris = List.of("Goalie.stct", "Goalie.stct", "sub/Attacker.stct", "../outside/Outside.stct", "../../../../../../etc/passwd", "/etc/passwd", out,
 				"file://" + out, "file:" + out, "file:///etc/passwd", "file://localhost" + out, "file:///", "file://", "file:", "file:Goalie.stct",
@@ -361,35 +365,9 @@ final class DiagramMessages {
 			"/*", "*/", "'", "\r\n");
 
 	/** The message's text mutated as bytes: flipped, cut, truncated, repeated, moved, words of JSON inserted. */
+	/** The message as text, mangled byte by byte (no longer JSON, or JSON of another meaning). */
 	private String text(String message) {
-		byte[] input = message.getBytes(StandardCharsets.UTF_8);
-		for (int steps = 1 + random.nextInt(4); steps > 0; steps--) {
-			int length = input.length;
-			input = switch (random.nextInt(6)) {
-				case 0 -> {
-					byte[] out = input.clone();
-					if (length > 0) {
-						out[random.nextInt(length)] = (byte) random.nextInt(256);
-					}
-					yield out;
-				}
-				case 1 -> cut(input, random.nextInt(length + 1), random.nextInt(Math.min(length, 40) + 1));
-				case 2 -> java.util.Arrays.copyOf(input, random.nextInt(length + 1));
-				case 3 -> {
-					int from = random.nextInt(length + 1);
-					int size = Math.min(random.nextInt(60) + 1, length - from);
-					int times = random.nextInt(10) == 0 ? 100 + random.nextInt(1000) : 1 + random.nextInt(3);
-					byte[] range = java.util.Arrays.copyOfRange(input, from, from + size);
-					byte[] repeated = new byte[range.length * times];
-					for (int t = 0; t < times; t++) {
-						System.arraycopy(range, 0, repeated, t * range.length, range.length);
-					}
-					yield insert(input, from, repeated);
-				}
-				default -> insert(input, random.nextInt(length + 1), pick(WORDS).getBytes(StandardCharsets.UTF_8));
-			};
-		}
-		return new String(input, StandardCharsets.UTF_8);
+		return bytes.mutate(message);
 	}
 
 	/** What no mutation of a real message makes: not JSON-RPC, deeply nested, huge, empty, a batch. */
@@ -478,21 +456,5 @@ final class DiagramMessages {
 		JsonArray array = new JsonArray();
 		values.forEach(array::add);
 		return array;
-	}
-
-	private static byte[] cut(byte[] input, int from, int size) {
-		int end = Math.min(input.length, from + size);
-		byte[] out = new byte[input.length - (end - from)];
-		System.arraycopy(input, 0, out, 0, from);
-		System.arraycopy(input, end, out, from, input.length - end);
-		return out;
-	}
-
-	private static byte[] insert(byte[] input, int at, byte[] what) {
-		byte[] out = new byte[input.length + what.length];
-		System.arraycopy(input, 0, out, 0, at);
-		System.arraycopy(what, 0, out, at, what.length);
-		System.arraycopy(input, at, out, at + what.length, input.length - at);
-		return out;
 	}
 }

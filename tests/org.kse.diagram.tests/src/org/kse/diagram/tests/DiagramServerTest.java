@@ -84,10 +84,11 @@ class DiagramServerTest {
 	@Test
 	void aSessionAsksForTheGoalieAndGetsItsGraph() throws Exception {
 		server.process(new ActionMessage("session", new RequestModelAction(Map.of("sourceUri", "Goalie.stct"))));
-		// the graph goes to the client first for the sizes of its labels (client layout), then back as the model
-		RequestBoundsAction bounds = await(RequestBoundsAction.class);
-		assertNotNull(bounds, () -> "the graph for the client's layout, received: " + kinds());
-		GGraph graph = assertInstanceOf(GGraph.class, bounds.getNewRoot());
+		// the server sizes the labels itself: the graph is the model at once, with no client layout first
+		SetModelAction model = await(SetModelAction.class);
+		assertNotNull(model, () -> "the graph, received: " + kinds());
+		assertTrue(received.stream().noneMatch(message -> message.getAction() instanceof RequestBoundsAction), () -> "no client layout asked: " + kinds());
+		GGraph graph = assertInstanceOf(GGraph.class, model.getNewRoot());
 		GNode root = assertInstanceOf(GNode.class, StatechartGraph.find(graph, "//@nodes.0"));
 		assertEquals("state:or", root.getType());
 		assertTrue(StatechartGraph.find(graph, "//@transitions.0") != null, "with the transitions");
@@ -98,9 +99,9 @@ class DiagramServerTest {
 		Files.writeString(folder.getParent().resolve("Outside.stct"), Files.readString(folder.resolve("Goalie.stct")));
 		server.process(new ActionMessage("session", new RequestModelAction(Map.of("sourceUri", "../Outside.stct"))));
 		Thread.sleep(500);
-		assertTrue(received.stream().noneMatch(message -> message.getAction() instanceof RequestBoundsAction), () -> "nothing served: " + kinds());
+		assertTrue(received.stream().noneMatch(message -> message.getAction() instanceof SetModelAction), () -> "nothing served: " + kinds());
 		server.process(new ActionMessage("session", new RequestModelAction(Map.of("sourceUri", "Goalie.stct"))));
-		assertNotNull(await(RequestBoundsAction.class), () -> "still serving: " + kinds());
+		assertNotNull(await(SetModelAction.class), () -> "still serving: " + kinds());
 		assertTrue(kinds().contains("leaves the served folder"), () -> "the client is told why: " + kinds());
 	}
 }

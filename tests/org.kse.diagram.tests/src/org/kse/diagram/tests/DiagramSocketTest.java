@@ -133,7 +133,7 @@ class DiagramSocketTest {
 		assertTrue(client.awaitContaining("\"result\"").matches(".*\"id\":\"?2\"?[,}].*"), "session initialized");
 		socket.sendText("{\"jsonrpc\":\"2.0\",\"method\":\"process\",\"params\":{\"clientId\":\"s\",\"action\":{\"kind\":\"requestModel\","
 				+ "\"options\":{\"sourceUri\":\"Goalie.stct\"}}}}", true);
-		String model = client.awaitContaining("requestBounds");
+		String model = client.awaitContaining("setModel");
 		assertTrue(model.contains("state:basic") && model.contains("//@transitions.0"), "the Goalie's graph: " + model.substring(0, Math.min(300, model.length())));
 		socket.sendClose(WebSocket.NORMAL_CLOSURE, "done").get(5, TimeUnit.SECONDS);
 	}

@@ -1,6 +1,7 @@
 package org.kse.diagram.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -26,7 +27,9 @@ import org.kse.model.statechart.StatechartPackage;
 /**
  * Issue 14: the pages of one file (two tabs, or a page and the one that replaced it after its
  * connection dropped) share one model, one command stack and one layout; unsaved edits outlive
- * the last page; a save never overwrites a change made on disk since the model was read.
+ * the last page; a save never overwrites a change made on disk since the model was read. A file
+ * changed on disk by another program is read again when nobody has unsaved edits, and otherwise
+ * the pages are asked once, and the choice (reload, keep the edits) is every page's.
  */
 class FileSourcesTest {
 
@@ -97,5 +100,100 @@ class FileSourcesTest {
 		}));
 		assertTrue(refused.getMessage().startsWith("Goalie.stct was changed on disk by another program"), refused.getMessage());
 		assertEquals(theirs, Files.readString(goalie), "their version is kept");
+	}
+
+	/** Another program's version of the file: the root state renamed, with a time of its own. */
+	private void changeOnDisk(String rootName) throws IOException {
+		Files.writeString(goalie, Files.readString(goalie).replaceFirst("name=\"[^\"]*\" label=\"0\"", "name=\"" + rootName + "\" label=\"0\""));
+		Files.setLastModifiedTime(goalie, FileTime.fromMillis(System.currentTimeMillis() + 5_000));
+	}
+
+	private static String rootName(Source source) {
+		return source.access(() -> source.model().getNodes().get(0).getName());
+	}
+
+	private static List<String> listen(Source source) {
+		List<String> told = new ArrayList<>();
+		source.onDiskChange((change, detail) -> told.add(change + (detail == null ? "" : ": " + detail)));
+		return told;
+	}
+
+	@Test
+	void aFileChangedOnDiskWithoutUnsavedEditsIsReadAgainForEveryPage() throws IOException {
+		Source first = sources.open(goalie);
+		Source second = sources.open(goalie);
+		List<String> firstTold = listen(first);
+		List<String> secondTold = listen(second);
+		sources.checkFiles();
+		assertEquals(List.of(), firstTold, "nothing changed yet");
+		changeOnDisk("theirs");
+		sources.checkFiles();
+		assertEquals(List.of("RELOADED"), firstTold);
+		assertEquals(List.of("RELOADED"), secondTold);
+		assertEquals("theirs", rootName(first));
+		assertSame(first.model(), second.model(), "still one model");
+		assertFalse(first.domain().getCommandStack().canUndo(), "a model read again starts a new history");
+		sources.checkFiles();
+		assertEquals(List.of("RELOADED"), firstTold, "told once");
+	}
+
+	@Test
+	void underUnsavedEditsThePagesAreAskedAndKeepingTheEditsLetsTheSaveOverwrite() throws IOException {
+		Source first = sources.open(goalie);
+		Source second = sources.open(goalie);
+		List<String> firstTold = listen(first);
+		List<String> secondTold = listen(second);
+		rename(first, "keeper");
+		changeOnDisk("theirs");
+		sources.checkFiles();
+		sources.checkFiles();
+		assertEquals(List.of("CONFLICT"), firstTold, "asked once per change");
+		assertEquals(List.of("CONFLICT"), secondTold);
+		assertEquals("keeper", rootName(first), "nothing is thrown away unasked");
+		assertThrows(IOException.class, () -> second.save(() -> {
+		}), "no save before the choice");
+		second.keepEdits();
+		assertEquals(List.of("CONFLICT", "KEPT"), firstTold, "the choice is every page's");
+		first.save(() -> {
+		});
+		assertEquals("keeper", StatechartResources.load(goalie).getNodes().get(0).getName(), "the save overwrote their version, as chosen");
+	}
+
+	@Test
+	void reloadingDropsTheUnsavedEditsOfEveryPage() throws IOException {
+		Source first = sources.open(goalie);
+		Source second = sources.open(goalie);
+		List<String> secondTold = listen(second);
+		rename(first, "keeper");
+		changeOnDisk("theirs");
+		sources.checkFiles();
+		first.reload();
+		assertEquals(List.of("CONFLICT", "RELOADED"), secondTold);
+		assertEquals("theirs", rootName(second));
+		assertFalse(second.domain().getCommandStack().canUndo());
+	}
+
+	@Test
+	void aPageThatComesBackIsAskedAboutAChangeStillUndecided() throws IOException {
+		Source page = sources.open(goalie);
+		rename(page, "keeper");
+		page.close();
+		changeOnDisk("theirs");
+		sources.checkFiles();
+		Source reconnected = sources.open(goalie);
+		assertEquals(List.of("CONFLICT"), listen(reconnected));
+		assertEquals("keeper", rootName(reconnected));
+	}
+
+	@Test
+	void aFileThatCannotBeReadIsReportedAndTheModelKept() throws IOException {
+		Source page = sources.open(goalie);
+		List<String> told = listen(page);
+		Files.writeString(goalie, "<not a statechart");
+		Files.setLastModifiedTime(goalie, FileTime.fromMillis(System.currentTimeMillis() + 5_000));
+		sources.checkFiles();
+		assertEquals(1, told.size());
+		assertTrue(told.get(0).startsWith("UNREADABLE: "), told.get(0));
+		assertEquals("goalie", rootName(page), "the model is kept");
 	}
 }

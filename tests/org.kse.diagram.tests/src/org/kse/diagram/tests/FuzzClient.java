@@ -160,12 +160,17 @@ final class FuzzClient implements WebSocket.Listener, AutoCloseable {
 		return joined != null && joined.has("result");
 	}
 
-	/** Asks for a model and returns the graph the server sends (its requestBounds), or null. */
+	/** Whether a message carries a graph: a model (the server sizes its labels) or, from a server that asks, one to measure. */
+	static boolean isGraph(String message) {
+		return message.contains("\"setModel\"") || message.contains("\"requestBounds\"");
+	}
+
+	/** Asks for a model and returns the graph the server sends, or null. */
 	String open(String model, long millis) throws InterruptedException {
 		int from = received.size();
 		send(DiagramMessages.process(DiagramMessages.object("kind", "requestModel", "options",
 				DiagramMessages.object("sourceUri", model, "diagramType", DiagramMessages.DIAGRAM_TYPE, "needsClientLayout", true))).toString());
-		return await(from, message -> message.contains("\"requestBounds\""), millis);
+		return await(from, FuzzClient::isGraph, millis);
 	}
 
 	/** The id of a JSON-RPC request (as its response carries it), or null for anything else. */

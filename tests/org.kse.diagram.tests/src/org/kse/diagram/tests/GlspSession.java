@@ -7,11 +7,12 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
 import org.eclipse.glsp.graph.GGraph;
+import org.eclipse.glsp.graph.GModelRoot;
 import org.eclipse.glsp.server.actions.Action;
 import org.eclipse.glsp.server.actions.ActionMessage;
 import org.eclipse.glsp.server.actions.MessageAction;
-import org.eclipse.glsp.server.features.core.model.ComputedBoundsAction;
-import org.eclipse.glsp.server.features.core.model.RequestBoundsAction;
+import org.eclipse.glsp.server.features.core.model.SetModelAction;
+import org.eclipse.glsp.server.features.core.model.UpdateModelAction;
 import org.eclipse.glsp.server.features.core.model.RequestModelAction;
 import org.eclipse.glsp.server.protocol.GLSPServer;
 import org.eclipse.glsp.server.protocol.InitializeClientSessionParameters;
@@ -38,20 +39,14 @@ final class GlspSession implements AutoCloseable {
 
 	GlspSession(Path folder, org.kse.diagram.server.StatechartSources sources) throws Exception {
 		server = Guice.createInjector(new StatechartServerModule(folder, sources)).getInstance(GLSPServer.class);
-		server.connect(message -> {
-			received.add(message);
-			// as the browser client does: measure the new graph and hand it back, which makes it the model
-			if (message.getAction() instanceof RequestBoundsAction request) {
-				server.process(new ActionMessage(ID, new ComputedBoundsAction(List.of(), List.of(), List.of(), request.getNewRoot().getRevision())));
-			}
-		});
+		server.connect(received::add);
 		InitializeParameters parameters = new InitializeParameters();
 		parameters.setApplicationId("kse-tests");
 		parameters.setProtocolVersion("1.0.0");
 		server.initialize(parameters).get(10, TimeUnit.SECONDS);
 		server.initializeClientSession(new InitializeClientSessionParameters(ID, StatechartDiagramConfiguration.DIAGRAM_TYPE,
 				List.of("setModel", "requestBounds", "updateModel", "message", "status", "setDirtyState", "setMarkers", "setClipboardData",
-						"setPopupModel", "setEditValidationResult"))).get(10, TimeUnit.SECONDS);
+						"setPopupModel", "setEditValidationResult", org.kse.diagram.server.DiskChanges.DiskChangeAction.KIND))).get(10, TimeUnit.SECONDS);
 	}
 
 	void send(Action action) {
@@ -65,13 +60,13 @@ final class GlspSession implements AutoCloseable {
 
 	/** Sends the action and returns the graph the server sends next (an edit's result). */
 	GGraph graphAfter(Action action) throws InterruptedException {
-		int before = count(RequestBoundsAction.class);
+		int before = graphs().size();
 		send(action);
 		long end = System.currentTimeMillis() + 15_000;
 		while (System.currentTimeMillis() < end) {
-			List<RequestBoundsAction> graphs = all(RequestBoundsAction.class);
+			List<GModelRoot> graphs = graphs();
 			if (graphs.size() > before) {
-				return (GGraph) graphs.get(graphs.size() - 1).getNewRoot();
+				return (GGraph) graphs.get(graphs.size() - 1);
 			}
 			Thread.sleep(10);
 		}
@@ -81,14 +76,14 @@ final class GlspSession implements AutoCloseable {
 	/** Sends an edit the server should refuse and returns the message the client is shown. */
 	String refusal(Action action) throws InterruptedException {
 		int before = all(MessageAction.class).size();
-		int graphs = count(RequestBoundsAction.class);
+		int graphs = graphs().size();
 		send(action);
 		long end = System.currentTimeMillis() + 10_000;
 		while (System.currentTimeMillis() < end) {
 			List<MessageAction> messages = all(MessageAction.class);
 			if (messages.size() > before) {
 				Thread.sleep(100);
-				if (count(RequestBoundsAction.class) != graphs) {
+				if (graphs().size() != graphs) {
 					throw new AssertionError("the refused edit changed the diagram");
 				}
 				MessageAction message = messages.get(messages.size() - 1);
@@ -110,6 +105,29 @@ final class GlspSession implements AutoCloseable {
 			Thread.sleep(10);
 		}
 		throw new AssertionError("no " + type.getSimpleName() + "; received " + kinds());
+	}
+
+	/**
+	 * The graphs the server sent, in order: a new model ({@code setModel}) or an edit's result
+	 * ({@code updateModel}). The server sizes every label itself, so no client measures them first.
+	 */
+	List<GModelRoot> graphs() {
+		return received.stream().map(ActionMessage::getAction)
+				.map(action -> action instanceof SetModelAction set ? set.getNewRoot() : action instanceof UpdateModelAction update ? update.getNewRoot() : null)
+				.filter(java.util.Objects::nonNull).toList();
+	}
+
+	/** The latest graph that arrives within 10 s after {@code after} graphs had arrived. */
+	GGraph nextGraph(int after) throws InterruptedException {
+		long end = System.currentTimeMillis() + 10_000;
+		while (System.currentTimeMillis() < end) {
+			List<GModelRoot> graphs = graphs();
+			if (graphs.size() > after) {
+				return (GGraph) graphs.get(graphs.size() - 1);
+			}
+			Thread.sleep(10);
+		}
+		throw new AssertionError("no new graph; received " + kinds());
 	}
 
 	int count(Class<? extends Action> type) {

@@ -15,6 +15,7 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kse.testing.ByteMutator;
 
 /**
  * Issue 13's fuzz suite for what a user hands to {@code kse}: formulas, statechart models, the
@@ -46,7 +47,7 @@ class CommandLineFuzzTest {
 				"|x~|0", "|x~|-3", "Wake.Chase~", "a = a", "b = c\nc = b", "_open_group_", "#", "\nx = \n", "Goalie", "goalie = x", "A.B.C");
 		try (Fuzz fuzz = new Fuzz("formula", temporary.resolve("formula"))) {
 			Random random = new Random(Fuzz.SEED);
-			Mutator mutator = new Mutator(random, replace(words, fuzz));
+			ByteMutator mutator = new ByteMutator(random, replace(words, fuzz));
 			Path formula = fuzz.in.resolve("F.txt");
 			for (int i = 0; i < Fuzz.INPUTS; i++) {
 				byte[] input = mutator.mutate(seeds.get(random.nextInt(seeds.size())).getBytes(StandardCharsets.UTF_8));
@@ -76,7 +77,7 @@ class CommandLineFuzzTest {
 				"<transitions source=\"//@nodes.0\" target=\"//@nodes.0\"/>");
 		try (Fuzz fuzz = new Fuzz("stct", temporary.resolve("stct"))) {
 			Random random = new Random(Fuzz.SEED + 1);
-			Mutator mutator = new Mutator(random, replace(words, fuzz));
+			ByteMutator mutator = new ByteMutator(random, replace(words, fuzz));
 			Path model = fuzz.in.resolve("M.stct");
 			for (int i = 0; i < Fuzz.INPUTS; i++) {
 				String seed = seeds.get(random.nextInt(seeds.size()));
@@ -111,7 +112,7 @@ class CommandLineFuzzTest {
 				"<!DOCTYPE m [<!ENTITY e SYSTEM \"REMOTE/e\">]>", "&e;");
 		try (Fuzz fuzz = new Fuzz("kse", temporary.resolve("kse"))) {
 			Random random = new Random(Fuzz.SEED + 2);
-			Mutator mutator = new Mutator(random, replace(words, fuzz));
+			ByteMutator mutator = new ByteMutator(random, replace(words, fuzz));
 			Path model = fuzz.in.resolve("M.stct");
 			Path diagram = fuzz.in.resolve("M.kse");
 			for (int i = 0; i < Fuzz.INPUTS; i++) {
@@ -143,7 +144,7 @@ class CommandLineFuzzTest {
 				"}; system(\"id\"); {", "\"); //", "((((((((((((((((((((", "!!!!!!!!!!!!!!!!");
 		try (Fuzz fuzz = new Fuzz("expression", temporary.resolve("expression"))) {
 			Random random = new Random(Fuzz.SEED + 3);
-			Mutator mutator = new Mutator(random, replace(words, fuzz));
+			ByteMutator mutator = new ByteMutator(random, replace(words, fuzz));
 			Path model = fuzz.in.resolve("M.stct");
 			Matcher slots = Pattern.compile(" TE=\"[^\"]*\"").matcher(goalie);
 			List<int[]> places = new ArrayList<>();
@@ -177,7 +178,7 @@ class CommandLineFuzzTest {
 		Path goalie = LEGACY.resolve("Goalie/Goalie.stct");
 		try (Fuzz fuzz = new Fuzz("proto", temporary.resolve("proto"))) {
 			Random random = new Random(Fuzz.SEED + 4);
-			Mutator mutator = new Mutator(random, replace(words, fuzz));
+			ByteMutator mutator = new ByteMutator(random, replace(words, fuzz));
 			for (int i = 0; i < Fuzz.INPUTS; i++) {
 				byte[] input = mutator.mutate(seeds.get(random.nextInt(seeds.size())).getBytes(StandardCharsets.UTF_8));
 				fuzz.clearOutput();
@@ -235,7 +236,7 @@ class CommandLineFuzzTest {
 	}
 
 	/** Replaces one to three attribute values with a mutation of themselves or a word of the dictionary, escaped. */
-	private static String mutateValues(String xml, Random random, Mutator mutator) {
+	private static String mutateValues(String xml, Random random, ByteMutator mutator) {
 		Matcher values = Pattern.compile(" ([\\w:]+)=\"([^\"]*)\"").matcher(xml);
 		List<int[]> places = new ArrayList<>();
 		while (values.find()) {

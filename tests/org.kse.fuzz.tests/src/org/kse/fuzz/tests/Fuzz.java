@@ -4,12 +4,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
-import java.net.InetAddress;
-import java.net.Proxy;
-import java.net.ProxySelector;
-import java.net.ServerSocket;
-import java.net.SocketAddress;
-import java.net.URI;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,11 +17,11 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 import org.kse.cli.Kse;
+import org.kse.testing.NetworkTrap;
 
 /**
  * Runs the {@code kse} command in-process on hostile inputs and holds each run to what a user
@@ -59,10 +53,7 @@ final class Fuzz implements AutoCloseable {
 	final Path sandbox;
 	final Path in;
 	final Path out;
-	private final ServerSocket trap;
-	private final AtomicInteger connections = new AtomicInteger();
-	private final ProxySelector previousProxies = ProxySelector.getDefault();
-	private final List<String> proxied = new ArrayList<>();
+	private final NetworkTrap network = new NetworkTrap();
 	private final ExecutorService runner = Executors.newSingleThreadExecutor(r -> {
 		Thread thread = new Thread(r, "kse-fuzz");
 		thread.setDaemon(true);
@@ -79,38 +70,11 @@ final class Fuzz implements AutoCloseable {
 		this.sandbox = sandbox;
 		this.in = Files.createDirectories(sandbox.resolve("in"));
 		this.out = Files.createDirectories(sandbox.resolve("out"));
-		trap = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-		Thread listener = new Thread(() -> {
-			while (!trap.isClosed()) {
-				try {
-					trap.accept().close();
-					connections.incrementAndGet();
-				} catch (IOException closed) {
-					return;
-				}
-			}
-		}, "kse-fuzz-trap");
-		listener.setDaemon(true);
-		listener.start();
-		// Any URL connection asks the proxy selector first, whatever the host.
-		ProxySelector.setDefault(new ProxySelector() {
-			@Override
-			public List<Proxy> select(URI uri) {
-				synchronized (proxied) {
-					proxied.add(String.valueOf(uri));
-				}
-				return List.of(Proxy.NO_PROXY);
-			}
-
-			@Override
-			public void connectFailed(URI uri, SocketAddress address, IOException e) {
-			}
-		});
 	}
 
 	/** An address that answers nothing; hostile inputs point at it. */
 	String remote() {
-		return "http://127.0.0.1:" + trap.getLocalPort();
+		return network.remote();
 	}
 
 	record Run(int code, String out, String err) {
@@ -178,10 +142,9 @@ final class Fuzz implements AutoCloseable {
 				break;
 			}
 		}
-		if (connections.get() > 0 || !proxied.isEmpty()) {
-			broken.add("reached for the network (" + connections.get() + " connections, URLs " + proxied + ")");
-			connections.set(0);
-			proxied.clear();
+		String reached = network.take();
+		if (reached != null) {
+			broken.add(reached);
 		}
 		if (!before.equals(filesOutsideTarget())) {
 			broken.add("wrote outside " + out);
@@ -243,9 +206,8 @@ final class Fuzz implements AutoCloseable {
 
 	@Override
 	public void close() throws IOException {
-		ProxySelector.setDefault(previousProxies);
 		runner.shutdownNow();
-		trap.close();
+		network.close();
 	}
 
 	static void delete(Path folder) {

@@ -27,8 +27,10 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.ui.model.diagram.DiagramPage;
+import org.kse.ui.model.diagram.WorkspaceDiagramServer;
 import org.kse.ui.model.editor.StatechartEditor;
 
 /**
@@ -66,9 +68,20 @@ class DiagramEditorTest {
 		return diagram.evaluate(script);
 	}
 
-	/** The text drawn on the diagram. */
+	/**
+	 * The texts of the diagram the page holds (the client's model: the page draws only what lies in
+	 * its window, and it opens at a readable zoom that does not show the whole Goalie).
+	 */
 	private String drawn() {
-		return String.valueOf(page("return document.getElementById(window.kse.clientId).textContent"));
+		return String.valueOf(page("""
+				const texts = [];
+				if (window.kse && document.body.dataset.kse === 'ready') {
+					(function walk(element) {
+						if (element.text) { texts.push(element.text); }
+						(element.children || []).forEach(walk);
+					})(window.kse.modelRoot());
+				}
+				return texts.join(' ');"""));
 	}
 
 	private Node state(String name) {
@@ -183,6 +196,171 @@ class DiagramEditorTest {
 		assertTrue(editor.isDiagramShown());
 		Ui.run("org.kse.ui.validate");
 		assertTrue(Ui.waitUntil(() -> errorsNaming(transition.getName()) > 0, 20_000), "Validate from the diagram marks the transition");
+	}
+
+	@Test
+	void aTabWhoseConnectionIsLostOpensAgainByItselfWithItsUnsavedEdits() throws Exception {
+		Node scan = state("Scan");
+		page("window.kse.dispatch({ kind: 'applyLabelEdit', labelId: '" + id(scan) + "#name', text: 'LookAround' }); return true");
+		assertTrue(Ui.waitUntil(() -> "LookAround".equals(scan.getName()), 10_000), "the diagram renamed the editor's state");
+		page("window.kse.select(['" + id(scan) + "']); return true");
+		assertTrue(Ui.waitUntil(() -> id(scan).equals(page("return window.kse.selection().join(' ')")), 10_000));
+
+		// the server goes away with every connection (as when it fails): the tab opens again on its own
+		WorkspaceDiagramServer.stop();
+		assertTrue(Ui.waitUntil(() -> "reconnected".equals(page("return document.body.dataset.kseConnection"))
+				&& "ready".equals(page("return document.body.dataset.kse")), PAGE_TIMEOUT),
+				"the page reconnects by itself; it says: " + page("return [document.body.dataset.kse, document.body.dataset.kseConnection, location.href, document.getElementById('kse-status').textContent].join(' | ')"));
+		assertTrue(String.valueOf(page("return JSON.stringify(window.kse.messages())")).contains("Reconnected"), "and says so: " + page("return JSON.stringify(window.kse.messages())"));
+		Ui.screenshot("34-diagram-reconnected");
+		assertTrue(drawn().contains("LookAround"), "the unsaved rename is still drawn: " + drawn());
+		assertEquals(id(scan), page("return window.kse.selection().join(' ')"), "the selection is kept");
+		assertTrue(editor.isDirty(), "and still unsaved in the editor");
+		assertTrue(Ui.waitUntil(() -> "true".equals(page("return document.body.dataset.kseDirty")), 5000), "the page shows unsaved changes");
+
+		// the command stack is the editor's: the page's Undo still takes the rename back, its Save saves
+		page("window.kse.run('undo'); return true");
+		assertTrue(Ui.waitUntil(() -> "Scan".equals(scan.getName()), 10_000), "undo after reconnecting");
+		page("window.kse.run('redo'); return true");
+		assertTrue(Ui.waitUntil(() -> "LookAround".equals(scan.getName()), 10_000), "redo after reconnecting");
+		page("window.kse.run('save'); return true");
+		assertTrue(Ui.waitUntil(() -> !editor.isDirty(), 10_000), "a save from the reconnected page");
+		assertEquals("LookAround", ((Node) StatechartResources.load(Path.of(file.getLocationURI())).eResource().getEObject(id(scan))).getName());
+	}
+
+	@Test
+	void aFileChangedOnDiskIsReloadedWhenCleanAndOtherwiseTheUserChooses() throws Exception {
+		Path onDisk = Path.of(file.getLocationURI());
+		String original = Files.readString(onDisk);
+
+		// no unsaved edits: another program's change is shown at once, in the tree and on the diagram
+		file.setContents(new java.io.ByteArrayInputStream(original.replace("name=\"Kick\"", "name=\"KickedOnDisk\"").getBytes(java.nio.charset.StandardCharsets.UTF_8)),
+				IResource.FORCE, null);
+		assertTrue(Ui.waitUntil(() -> named("KickedOnDisk") != null, 10_000), "the editor reloads the changed file");
+		assertTrue(Ui.waitUntil(() -> drawn().contains("KickedOnDisk"), PAGE_TIMEOUT), "and the diagram shows it: " + drawn());
+		assertFalse(editor.isDirty());
+
+		// unsaved edits: the user is asked; Keep My Edits keeps them, and their save then replaces the change knowingly
+		Node scan = state("Scan");
+		page("window.kse.dispatch({ kind: 'applyLabelEdit', labelId: '" + id(scan) + "#name', text: 'LookAround' }); return true");
+		assertTrue(Ui.waitUntil(() -> "LookAround".equals(scan.getName()) && editor.isDirty(), 10_000));
+		var asked = answering("Keep My Edits");
+		file.setContents(new java.io.ByteArrayInputStream(Files.readString(onDisk).replace("name=\"Stare\"", "name=\"StareOnDisk\"").getBytes(java.nio.charset.StandardCharsets.UTF_8)),
+				IResource.FORCE, null);
+		assertTrue(Ui.waitUntil(() -> asked.get() != null, 20_000), "the user is asked");
+		assertTrue(asked.get().contains("changed on disk by another program"), asked.get());
+		assertEquals("LookAround", scan.getName(), "the edits are kept");
+		assertTrue(editor.isDirty());
+		editor.doSave(null);
+		assertFalse(editor.isDirty(), "saved without a second question");
+		assertTrue(Files.readString(onDisk).contains("LookAround") && !Files.readString(onDisk).contains("StareOnDisk"));
+
+		// Reload drops the edits for the file's contents
+		page("window.kse.dispatch({ kind: 'applyLabelEdit', labelId: '" + id(state("LookAround")) + "#name', text: 'Dropped' }); return true");
+		assertTrue(Ui.waitUntil(editor::isDirty, 10_000));
+		var reload = answering("Reload");
+		file.setContents(new java.io.ByteArrayInputStream(Files.readString(onDisk).replace("name=\"ApproachBall\"", "name=\"ApproachOnDisk\"").getBytes(java.nio.charset.StandardCharsets.UTF_8)),
+				IResource.FORCE, null);
+		assertTrue(Ui.waitUntil(() -> reload.get() != null && named("ApproachOnDisk") != null, 20_000), "reloaded from disk");
+		assertFalse(editor.isDirty());
+		assertEquals(null, named("Dropped"));
+		assertTrue(Ui.waitUntil(() -> drawn().contains("ApproachOnDisk") && !drawn().contains("Dropped"), PAGE_TIMEOUT), "the diagram shows the file: " + drawn());
+
+		// a change the editor was never told of (the workspace not refreshed): Save asks before overwriting it
+		page("window.kse.dispatch({ kind: 'applyLabelEdit', labelId: '" + id(state("ApproachOnDisk")) + "#name', text: 'Mine' }); return true");
+		assertTrue(Ui.waitUntil(editor::isDirty, 10_000));
+		String theirs = Files.readString(onDisk).replace("name=\"Stare\"", "name=\"Theirs\"");
+		Files.writeString(onDisk, theirs);
+		var overwrite = answering("No");
+		editor.doSave(null);
+		assertTrue(overwrite.get() != null && overwrite.get().contains("has been changed on disk"), "Save asks: " + overwrite.get());
+		assertEquals(theirs, Files.readString(onDisk), "answered No, the other program's change stays");
+		assertTrue(editor.isDirty(), "and the edits stay unsaved");
+	}
+
+	/** A state of the editor's model by name, or null. */
+	private Node named(String name) {
+		for (var contents = editor.getModel().eAllContents(); contents.hasNext();) {
+			if (contents.next() instanceof Node node && name.equals(node.getName())) {
+				return node;
+			}
+		}
+		return null;
+	}
+
+	/** Answers the next dialog that offers {@code button} with it (within 20 s); holds the dialog's text once answered. */
+	private static java.util.concurrent.atomic.AtomicReference<String> answering(String button) {
+		var asked = new java.util.concurrent.atomic.AtomicReference<String>();
+		long deadline = System.currentTimeMillis() + 20_000;
+		Runnable[] look = new Runnable[1];
+		look[0] = () -> {
+			for (var shell : Ui.display().getShells()) {
+				if (shell.isVisible() && Ui.find(shell, org.eclipse.swt.widgets.Button.class).stream().anyMatch(b -> button.equals(b.getText().replace("&", "")))) {
+					asked.set(String.join(" ", Ui.find(shell, org.eclipse.swt.widgets.Label.class).stream().map(org.eclipse.swt.widgets.Label::getText).toList()));
+					Ui.press(shell, button);
+					return;
+				}
+			}
+			if (System.currentTimeMillis() < deadline) {
+				Ui.display().timerExec(100, look[0]);
+			}
+		};
+		Ui.display().timerExec(100, look[0]);
+		return asked;
+	}
+
+	/**
+	 * A behaviour of about 5,000 states, made as a user makes it (formulas transformed, no
+	 * notation yet: the server arranges it), opens on the Diagram tab, takes an edit and saves.
+	 */
+	@Test
+	void aStatechartOfFiveThousandStatesOpensEditsAndSaves() throws Exception {
+		StringBuilder formula = new StringBuilder("Large\nlarge = Init.(" + String.join(" | ", java.util.stream.IntStream.range(0, 25).mapToObj(c -> "cap" + c).toList()) + ")+\n");
+		for (int c = 0; c < 25; c++) {
+			final int capability = c;
+			formula.append("cap").append(c).append(" = ")
+					.append(String.join(" | ", java.util.stream.IntStream.range(0, 50).mapToObj(a -> "Act" + capability + "_" + a + "+").toList())).append('\n');
+		}
+		var outcome = org.kse.transform.FormulaTransformation.run(formula.toString(), org.eclipse.emf.common.util.URI.createURI("Large.txt"), null);
+		assertNotNull(outcome.model(), () -> "the formulas transform: " + outcome.issues());
+		IFile large = file.getProject().getFile("Large.stct");
+		StatechartResources.save(outcome.model(), Path.of(large.getLocationURI()));
+		large.refreshLocal(IResource.DEPTH_ZERO, null);
+		int states = 0;
+		for (var contents = outcome.model().eAllContents(); contents.hasNext();) {
+			states += contents.next() instanceof Node ? 1 : 0;
+		}
+		assertTrue(states >= 5000, "about 5,000 states: " + states);
+
+		StatechartEditor big = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), large, StatechartEditor.ID));
+		DiagramPage page = big.getDiagram();
+		long start = System.nanoTime();
+		assertTrue(Ui.waitUntil(() -> "ready".equals(page.evaluate("return document.body.dataset.kse")), 5 * PAGE_TIMEOUT),
+				"the diagram of " + states + " states is shown; the page says: " + page.evaluate("return document.getElementById('kse-status').textContent"));
+		System.out.printf("DiagramEditorTest: %d states shown on the Diagram tab in %.1f s%n", states, (System.nanoTime() - start) / 1e9);
+		Ui.screenshot("35-diagram-5000-states");
+
+		Node last = null;
+		for (var contents = big.getModel().eAllContents(); contents.hasNext();) {
+			if (contents.next() instanceof Node node && "Act24_49".equals(node.getName())) {
+				last = node;
+			}
+		}
+		assertNotNull(last, "the last activity's state");
+		Node renamed = last;
+		page.evaluate("window.kse.dispatch({ kind: 'applyLabelEdit', labelId: '" + id(renamed) + "#name', text: 'LastOne' }); return true");
+		assertTrue(Ui.waitUntil(() -> "LastOne".equals(renamed.getName()), 60_000), "the diagram renames a state of the big model");
+		page.evaluate("window.kse.run('save'); return true");
+		assertTrue(Ui.waitUntil(() -> !big.isDirty(), 60_000), "and saves it");
+		Model saved = StatechartResources.load(Path.of(large.getLocationURI()));
+		assertEquals("LastOne", ((Node) saved.eResource().getEObject(id(renamed))).getName());
+		int savedStates = 0;
+		for (var contents = saved.eAllContents(); contents.hasNext();) {
+			savedStates += contents.next() instanceof Node ? 1 : 0;
+		}
+		assertEquals(states, savedStates, "no state is lost");
+		assertTrue(Files.exists(org.kse.notation.NotationFiles.beside(Path.of(large.getLocationURI()))), "the layout is saved beside it");
+		Ui.page().closeEditor(big, false);
 	}
 
 	@Test

@@ -39,7 +39,9 @@ public class ChangeContainerHandler extends StatechartOperationHandler<ChangeCon
 		double x = operation.getLocation().map(point -> coordinate(point.getX()) - origin[0]).orElse(old.x());
 		double y = operation.getLocation().map(point -> coordinate(point.getY()) - origin[1]).orElse(old.y());
 		if (target instanceof Node) {
+			// a state grabbed in its middle and dropped near the composite's left or top border stays inside it
 			y = Math.max(y, Arrange.HEADER);
+			x = Math.max(x, 4);
 		}
 		CompoundCommand reparent = new CompoundCommand(CompoundCommand.MERGE_COMMAND_ALL, "Move State");
 		reparent.append(move);

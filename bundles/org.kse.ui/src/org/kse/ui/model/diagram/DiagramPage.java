@@ -60,6 +60,17 @@ public final class DiagramPage {
 					return null;
 				}
 			};
+			// the page lost its connection and asks where to open anew (a new server if the old one is gone); the model is the editor's, so nothing is lost
+			new BrowserFunction(created, "kseHostReconnect") {
+				@Override
+				public Object function(Object[] arguments) {
+					try {
+						return WorkspaceDiagramServer.page(file).toString();
+					} catch (Exception e) {
+						return null; // the page says it cannot reconnect
+					}
+				}
+			};
 		} catch (SWTError | Exception e) {
 			if (created != null) {
 				created.dispose();
@@ -91,7 +102,7 @@ public final class DiagramPage {
 		return problem;
 	}
 
-	/** Opens the page again: a new session on the editor's current model (after Revert, say). */
+	/** Opens the page again: a new session on the editor's current model (after Revert, or a lost connection). */
 	public void reload() {
 		if (browser != null && !browser.isDisposed()) {
 			try {

@@ -41,6 +41,10 @@ public final class WorkspaceDiagramServer {
 	private static final String EDITOR_PREFIX = "editor-";
 
 	private static DiagramSocketServer server;
+	/** The port of the last server: one started again takes it when it is free, so that its pages keep their origin. */
+	private static int lastPort;
+	/** What the pages of one model share (its layout), for as long as the model lives: a page that reconnects finds it. */
+	private static final Map<Model, Map<Class<?>, Object>> shared = java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
 	private static final Map<Path, Host> hosts = new ConcurrentHashMap<>();
 	/** The random key of each file lent, by which its page names it: a page opens only files open in an editor. */
 	private static final Map<String, Path> keys = new ConcurrentHashMap<>();
@@ -79,15 +83,27 @@ public final class WorkspaceDiagramServer {
 				throw new IllegalStateException("the diagram client (bundle " + DiagramPages.CLIENT_BUNDLE + ") is not installed");
 			}
 			Path workspace = Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI());
-			server = DiagramSocketServer.start(workspace, 0, pages, new EditorSources(Display.getCurrent()));
-			Runtime.getRuntime().addShutdownHook(new Thread(WorkspaceDiagramServer::stop, "kse-diagram-server-stop"));
+			EditorSources sources = new EditorSources(Display.getCurrent());
+			if (lastPort == 0) {
+				Runtime.getRuntime().addShutdownHook(new Thread(WorkspaceDiagramServer::stop, "kse-diagram-server-stop"));
+			}
+			try {
+				server = DiagramSocketServer.start(workspace, lastPort, pages, sources);
+			} catch (java.io.IOException e) {
+				server = DiagramSocketServer.start(workspace, 0, pages, sources); // the former port is taken now
+			}
+			lastPort = server.port();
 		}
 		String keyOfFile = keys.entrySet().stream().filter(entry -> entry.getValue().equals(key(file))).map(Map.Entry::getKey).findFirst()
 				.orElseThrow(() -> new IllegalStateException(file.getFileName() + " is not open in a statechart editor"));
 		return server.page(EDITOR_PREFIX + keyOfFile + "/" + file.getFileName());
 	}
 
-	static synchronized void stop() {
+	/**
+	 * Stops the server (the workbench ends, or a test takes the connection away): its pages lose
+	 * their connection and ask their editors to open them again, on a server started anew.
+	 */
+	public static synchronized void stop() {
 		if (server != null) {
 			try {
 				server.close();
@@ -147,6 +163,12 @@ public final class WorkspaceDiagramServer {
 				}
 
 				/** The editor's Save, which writes the notation through the participant {@link #onSave} registered. */
+				@Override
+				public <T> T shared(Class<T> kind, Supplier<T> create) {
+					Map<Class<?>, Object> ofModel = shared.computeIfAbsent(host.model(), model -> new ConcurrentHashMap<>());
+					return kind.cast(ofModel.computeIfAbsent(kind, any -> create.get()));
+				}
+
 				@Override
 				public void save(NotationWriter notation) {
 					access(() -> {

@@ -3,6 +3,7 @@ package org.kse.ui.model.editor;
 import org.kse.model.edit.StatechartEdits;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -94,6 +95,8 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	private final IResourceChangeListener fileListener = this::fileChanged;
 	/** Set while this editor writes its file, so that its own save is not taken for a change on disk. */
 	private boolean saving;
+	/** The file on disk as this editor last read, wrote or was told of it: a save over anything else asks first. */
+	private FileTime seenOnDisk;
 	private org.kse.messages.MessageCatalog catalog;
 	private String catalogFolder;
 	private org.eclipse.swt.custom.CTabFolder tabs;
@@ -137,6 +140,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			throw new PartInitException("the statechart editor opens files of the workspace");
 		}
 		try {
+			seenOnDisk = lastModified(file);
 			model = StatechartResources.load(domain.getResourceSet(), Path.of(file.getLocationURI()));
 		} catch (IOException e) {
 			throw new PartInitException("cannot open " + file.getFullPath() + ": " + e.getMessage(), e);
@@ -536,9 +540,14 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 	public void doSave(IProgressMonitor monitor) {
 		IFile file = getFile();
 		commitPendingEdits();
+		if (!java.util.Objects.equals(lastModified(file), seenOnDisk) && !org.eclipse.jface.dialogs.MessageDialog.openQuestion(getSite().getShell(), "File Changed",
+				file.getFullPath() + " has been changed on disk since this editor read it. Overwrite that change with the editor's contents?")) {
+			return;
+		}
 		saving = true;
 		try {
 			StatechartResources.save(model, Path.of(file.getLocationURI()));
+			seenOnDisk = lastModified(file);
 			for (var participant : saveParticipants) {
 				participant.write();
 			}
@@ -563,6 +572,7 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 			var resourceSet = domain.getResourceSet();
 			resourceSet.getResources().forEach(org.eclipse.emf.ecore.resource.Resource::unload);
 			resourceSet.getResources().clear();
+			seenOnDisk = lastModified(file);
 			reloaded = StatechartResources.load(resourceSet, Path.of(file.getLocationURI()));
 		} catch (IOException e) {
 			org.eclipse.jface.dialogs.ErrorDialog.openError(getSite().getShell(), "Revert", "Cannot read " + file.getFullPath(),
@@ -588,7 +598,10 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		updateActions();
 	}
 
-	/** The file changed on disk (say, the formula was transformed again): reload it unless there are unsaved edits. */
+	/**
+	 * The file changed on disk (say, the formula was transformed again): reloaded when the editor
+	 * has no unsaved edits, otherwise the user chooses between the file and the edits.
+	 */
 	private void fileChanged(IResourceChangeEvent event) {
 		IFile file = getFile();
 		IResourceDelta delta = event.getDelta() == null || file == null ? null : event.getDelta().findMember(file.getFullPath());
@@ -608,8 +621,32 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 				getSite().getPage().closeEditor(this, false);
 			} else if (!isDirty()) {
 				doRevert();
+			} else if (!java.util.Objects.equals(lastModified(file), seenOnDisk)) {
+				askAboutChangeOnDisk(file);
 			}
 		});
+	}
+
+	private void askAboutChangeOnDisk(IFile file) {
+		FileTime changed = lastModified(file);
+		int choice = new org.eclipse.jface.dialogs.MessageDialog(getSite().getShell(), "File Changed", null,
+				file.getFullPath() + " has been changed on disk by another program, and this editor has unsaved edits.\n\n"
+						+ "Reload drops the edits and shows the file; Keep My Edits keeps them (saving them then replaces the change on disk).",
+				org.eclipse.jface.dialogs.MessageDialog.QUESTION, 0, "Reload", "Keep My Edits").open();
+		if (choice == 0) {
+			doRevert();
+		} else {
+			seenOnDisk = changed; // seen and set aside: a save may overwrite it without asking again
+		}
+	}
+
+	/** When the file was last written on disk; null when it cannot be read. */
+	private static FileTime lastModified(IFile file) {
+		try {
+			return java.nio.file.Files.getLastModifiedTime(Path.of(file.getLocationURI()));
+		} catch (IOException | RuntimeException e) {
+			return null;
+		}
 	}
 
 	@Override

@@ -1,4 +1,4 @@
-package org.kse.fuzz.tests;
+package org.kse.testing;
 
 import java.nio.charset.StandardCharsets;
 import java.util.List;
@@ -9,17 +9,19 @@ import java.util.Random;
  * swapped, words from a dictionary of what breaks parsers and generators put in, or the seed
  * replaced by noise. Everything depends on the {@link Random}, so a seed replays a run.
  */
-final class Mutator {
+public final class ByteMutator {
 
 	private final Random random;
 	private final List<String> dictionary;
 
-	Mutator(Random random, List<String> dictionary) {
+	/** {@code dictionary}: what breaks the parser under test (its delimiters, escapes, hostile values). */
+	public ByteMutator(Random random, List<String> dictionary) {
 		this.random = random;
 		this.dictionary = dictionary;
 	}
 
-	byte[] mutate(byte[] seed) {
+	/** A hostile variant of {@code seed}: one to four steps, or (one time in 50) noise. */
+	public byte[] mutate(byte[] seed) {
 		if (random.nextInt(50) == 0) {
 			return noise();
 		}
@@ -31,7 +33,7 @@ final class Mutator {
 		return input;
 	}
 
-	String mutate(String seed) {
+	public String mutate(String seed) {
 		return new String(mutate(seed.getBytes(StandardCharsets.UTF_8)), StandardCharsets.UTF_8);
 	}
 
