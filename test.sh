@@ -86,7 +86,7 @@ echo "== kse demo (the README's first command) on the runtime installed above"
 KSE_RUNTIME_PREFIX="$out/runtime-prefix" ./kse demo --out "$out/demo" --half 60
 
 echo "== kse smoke run"
-./kse transform -q examples/Goalie/Goalie.txt -o "$out/Goalie.stct"
+./kse transform -q examples/Goalie/Goalie.liveness -o "$out/Goalie.stct"
 ./kse validate "$out/Goalie.stct"
 ./kse label "$out/Goalie.stct"
 ./kse validate tests/data/legacy-kse/Goalie/Goalie.stct

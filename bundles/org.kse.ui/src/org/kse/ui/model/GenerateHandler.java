@@ -3,6 +3,7 @@ package org.kse.ui.model;
 import java.io.IOException;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.atomic.AtomicReference;
 
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
@@ -16,7 +17,11 @@ import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.SubMonitor;
+import org.eclipse.core.runtime.jobs.IJobChangeEvent;
+import org.eclipse.core.runtime.jobs.JobChangeAdapter;
 import org.eclipse.jface.window.Window;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.handlers.HandlerUtil;
 import org.eclipse.ui.progress.IProgressConstants;
 import org.kse.generator.monas.MonasGenerator;
@@ -27,7 +32,7 @@ import org.kse.ui.preferences.KsePreferences;
 /**
  * "Generate Code": Monas C++ of the model into its source folder. The first time (or with the
  * command's {@code configure} parameter) a dialog connects the model to a folder; KSE remembers it.
- * The job's summary (files written, unchanged, kept) stays in the Progress view.
+ * When it ends, a summary window lists what was written (with links to the files), unchanged and kept.
  */
 public class GenerateHandler extends AbstractHandler {
 
@@ -36,7 +41,7 @@ public class GenerateHandler extends AbstractHandler {
 	@Override
 	public Object execute(ExecutionEvent event) throws org.eclipse.core.commands.ExecutionException {
 		List<IFile> files = ModelFiles.of(event);
-		if (files.size() != 1) {
+		if (files.size() != 1 || org.kse.ui.KeyEchoes.isEcho(event)) {
 			return null;
 		}
 		IFile file = files.get(0);
@@ -82,6 +87,19 @@ public class GenerateHandler extends AbstractHandler {
 				: Status.error("the external generator " + command + " failed with exit code " + exit + (tail.isEmpty() ? "" : ":\n" + tail));
 	}
 
+	/** What the headline leaves out: which activities were kept, and how many files were already up to date. */
+	private static List<String> details(IStatus result, MonasGenerator.Report report) {
+		List<String> details = new java.util.ArrayList<>();
+		if (report != null && !report.kept().isEmpty()) {
+			details.add("Activities kept (an activity that exists is never overwritten): "
+					+ String.join(", ", report.kept().stream().map(kept -> kept.getFileName().toString()).toList()) + ".");
+		}
+		if (report != null && !report.unchanged().isEmpty()) {
+			details.add(report.unchanged().size() + (report.unchanged().size() == 1 ? " file was" : " files were") + " already up to date.");
+		}
+		return details;
+	}
+
 	private static void createFolder(IFolder folder, IProgressMonitor monitor) throws CoreException {
 		if (folder.getParent() instanceof IFolder parent && !parent.exists()) {
 			createFolder(parent, monitor);
@@ -91,6 +109,7 @@ public class GenerateHandler extends AbstractHandler {
 
 	/** Generates in a job; public for callers that know the folder already (tests, other commands). */
 	public static WorkspaceJob schedule(IFile file, IContainer folder, boolean logger) {
+		AtomicReference<MonasGenerator.Report> finished = new AtomicReference<>();
 		WorkspaceJob job = new WorkspaceJob("Generating code for " + file.getName()) {
 			@Override
 			public IStatus runInWorkspace(IProgressMonitor monitor) throws CoreException {
@@ -116,6 +135,7 @@ public class GenerateHandler extends AbstractHandler {
 								generation.worked(1);
 							});
 					folder.refreshLocal(IResource.DEPTH_INFINITE, progress.split(10));
+					finished.set(report);
 					String replaced = report.replacements().isEmpty() ? ""
 							: "; the source folder's messages replace the built-in " + String.join(", ",
 									report.replacements().stream().map(org.kse.messages.StandardMessages.Replacement::type).toList());
@@ -133,6 +153,21 @@ public class GenerateHandler extends AbstractHandler {
 		job.setRule(file.getWorkspace().getRoot());
 		job.setUser(true);
 		job.setProperty(IProgressConstants.KEEP_PROPERTY, Boolean.TRUE);
+		// the summary window says what went wrong, where the user looks; the job-error dialog would say it again
+		job.setProperty(IProgressConstants.NO_IMMEDIATE_ERROR_PROMPT_PROPERTY, Boolean.TRUE);
+		Display display = Display.getCurrent() != null ? Display.getCurrent() : PlatformUI.getWorkbench().getDisplay();
+		job.addJobChangeListener(new JobChangeAdapter() {
+			@Override
+			public void done(IJobChangeEvent event) {
+				IStatus result = event.getResult();
+				if (result.getSeverity() == IStatus.CANCEL) {
+					return;
+				}
+				MonasGenerator.Report report = finished.get();
+				display.asyncExec(() -> GenerationSummary.open(result.getMessage(), details(result, report),
+						report == null ? List.of() : report.written().stream().map(ModelFiles.location(folder)::resolve).toList()));
+			}
+		});
 		job.schedule();
 		return job;
 	}

@@ -18,7 +18,7 @@ public class LabelHandler extends AbstractHandler {
 	@Override
 	public Object execute(ExecutionEvent event) {
 		List<IFile> files = ModelFiles.of(event);
-		if (!files.isEmpty()) {
+		if (!files.isEmpty() && !org.kse.ui.KeyEchoes.isEcho(event)) {
 			ModelJob.schedule("Labeling", files, true, (file, model, progress) -> {
 				Labeler.label(model);
 				progress.worked(5);

@@ -11,6 +11,7 @@ import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.SubMonitor;
+import org.eclipse.core.runtime.jobs.IJobChangeListener;
 import org.eclipse.ui.ide.IDE;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
@@ -32,6 +33,11 @@ final class ModelJob {
 
 	/** Null when the user kept unsaved editors; else the scheduled job. */
 	static WorkspaceJob schedule(String verb, List<IFile> files, boolean wholeWorkspace, Step step) {
+		return schedule(verb, files, wholeWorkspace, step, null);
+	}
+
+	/** As above; {@code listener} (if any) hears the job from before it starts, so it never misses its end. */
+	static WorkspaceJob schedule(String verb, List<IFile> files, boolean wholeWorkspace, Step step, IJobChangeListener listener) {
 		if (!IDE.saveAllEditors(files.toArray(IResource[]::new), true)) {
 			return null;
 		}
@@ -61,6 +67,9 @@ final class ModelJob {
 		};
 		job.setRule(files.size() == 1 && !wholeWorkspace ? files.get(0) : files.get(0).getWorkspace().getRoot());
 		job.setUser(true);
+		if (listener != null) {
+			job.addJobChangeListener(listener);
+		}
 		job.schedule();
 		return job;
 	}

@@ -26,6 +26,9 @@ public class NewFormulaWizard extends Wizard implements INewWizard {
 			playing = Scan+ | ApproachBall+ | Kick
 			""";
 
+	/** Words of a file name that say what the file is rather than which behaviour it holds. */
+	private static final java.util.regex.Pattern FILE_KIND = java.util.regex.Pattern.compile("(?i)[ ._-]*(liveness|formulas?)$");
+
 	private IWorkbench workbench;
 	private IStructuredSelection selection;
 	private WizardNewFileCreationPage page;
@@ -43,9 +46,7 @@ public class NewFormulaWizard extends Wizard implements INewWizard {
 		page = new WizardNewFileCreationPage("formula", selection) {
 			@Override
 			protected InputStream getInitialContents() {
-				String behaviour = getFileName().replaceFirst("\\\\.[^.]*$", "");
-				String root = behaviour.isEmpty() ? "behaviour" : Character.toLowerCase(behaviour.charAt(0)) + behaviour.substring(1).replaceAll("[^A-Za-z0-9_]", "_");
-				return new ByteArrayInputStream(TEMPLATE.formatted(root).getBytes(StandardCharsets.UTF_8));
+				return new ByteArrayInputStream(TEMPLATE.formatted(behaviourName(getFileName())).getBytes(StandardCharsets.UTF_8));
 			}
 		};
 		page.setTitle("Liveness formulas");
@@ -53,6 +54,36 @@ public class NewFormulaWizard extends Wizard implements INewWizard {
 		page.setFileExtension("liveness");
 		page.setFileName("Behaviour.liveness");
 		addPage(page);
+	}
+
+	/**
+	 * The behaviour's formula name for a file name, as the examples spell theirs: {@code Keeper.liveness},
+	 * {@code keeper_liveness.liveness} and {@code Keeper formulas.txt} hold {@code keeper}; {@code
+	 * ball-keeper v2} holds {@code ballKeeperV2}. It names the model, so the generated code's folder.
+	 */
+	public static String behaviourName(String fileName) {
+		String name = fileName.strip();
+		int dot = name.lastIndexOf('.');
+		if (dot > 0) {
+			name = name.substring(0, dot);
+		}
+		String rest = FILE_KIND.matcher(name).replaceFirst("");
+		if (!rest.isEmpty()) {
+			name = rest;
+		}
+		StringBuilder identifier = new StringBuilder();
+		for (String word : name.split("[^A-Za-z0-9_]+")) {
+			if (word.isEmpty()) {
+				continue;
+			}
+			identifier.append(identifier.isEmpty() ? Character.toLowerCase(word.charAt(0)) : Character.toUpperCase(word.charAt(0)));
+			identifier.append(word.substring(1));
+		}
+		if (identifier.isEmpty()) {
+			return "behaviour";
+		}
+		// an ID starts with a letter or an underscore
+		return Character.isDigit(identifier.charAt(0)) ? "behaviour" + identifier : identifier.toString();
 	}
 
 	@Override

@@ -86,6 +86,7 @@ public class NewProjectWizard extends Wizard implements INewWizard {
 		SubMonitor progress = SubMonitor.convert(monitor, "Creating " + project.getName(), 10);
 		IProjectDescription description = ResourcesPlugin.getWorkspace().newProjectDescription(project.getName());
 		description.setLocation(location);
+		description.setNatureIds(new String[] { org.kse.ui.KseProject.NATURE });
 		project.create(description, progress.split(1));
 		project.open(progress.split(1));
 		for (String folder : new String[] { "models", "src", "src/statecharts", "src/activities", "src/messages" }) {

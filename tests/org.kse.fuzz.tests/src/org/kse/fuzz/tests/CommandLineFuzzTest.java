@@ -39,8 +39,8 @@ class CommandLineFuzzTest {
 
 	@Test
 	void formulas() throws IOException {
-		List<String> seeds = texts(Stream.of(EXAMPLES.resolve("Goalie/Goalie.txt"), EXAMPLES.resolve("Attacker/Attacker.txt"),
-				EXAMPLES.resolve("Defender/Defender.txt"), LEGACY.resolve("Goalie/Goalie.txt"), LEGACY.resolve("GUITester/GUITester.txt"),
+		List<String> seeds = texts(Stream.of(EXAMPLES.resolve("Goalie/Goalie.liveness"), EXAMPLES.resolve("Attacker/Attacker.liveness"),
+				EXAMPLES.resolve("Defender/Defender.liveness"), LEGACY.resolve("Goalie/Goalie.txt"), LEGACY.resolve("GUITester/GUITester.txt"),
 				LEGACY.resolve("TestBehavior/TestBehavior.txt")));
 		seeds.add("Tiny\nt = A.B\n");
 		List<String> words = words("|", "||", "&", "~", "+", "*", "(", ")", "((((((((((((((((", "))))", "=", ".", ",", "|A~|2147483647", "|x~|99999999999",

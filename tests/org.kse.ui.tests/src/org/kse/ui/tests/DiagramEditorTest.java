@@ -26,6 +26,7 @@ import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -39,6 +40,7 @@ import org.kse.ui.model.editor.StatechartEditor;
  * ways, a rename in the Properties view is drawn, an edit on the diagram is the editor's (dirty,
  * undone by the workbench's Undo), and a save from either writes the model and its notation.
  */
+@ExtendWith(UnexpectedDialogs.class)
 class DiagramEditorTest {
 
 	private static final long PAGE_TIMEOUT = 90_000;

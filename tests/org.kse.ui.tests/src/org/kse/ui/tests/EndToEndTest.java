@@ -33,6 +33,7 @@ import org.eclipse.ui.ide.IDE;
 import org.eclipse.ui.views.properties.PropertySheet;
 import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Transition;
 import org.kse.ui.formula.FormulaEditor;
@@ -49,6 +50,7 @@ import org.kse.ui.wizards.NewProjectWizard;
  * into the project (the Generate dialog asks for the folder), and the generated files found.
  * Every step leaves a screenshot in target/screenshots (40-…).
  */
+@ExtendWith(UnexpectedDialogs.class)
 class EndToEndTest {
 
 	private static final List<String> GOALIE = List.of("goalie = Init.(playing | nonPlaying)+", "nonPlaying = NoPlay .[GoToPosition+]",
@@ -125,8 +127,8 @@ class EndToEndTest {
 		assertTrue(Ui.waitUntil(model::exists, 30_000), "Goalie.stct written next to the formulas");
 		assertTrue(Ui.waitUntil(() -> Job.getJobManager().isIdle(), 30_000));
 
-		// 5. the model opened; a guard written in the Properties view, with completion
-		StatechartEditor statechart = assertInstanceOf(StatechartEditor.class, IDE.openEditor(Ui.page(), model));
+		// 5. the model opened by Transform; a guard written in the Properties view, with completion
+		StatechartEditor statechart = assertInstanceOf(StatechartEditor.class, Ui.page().getActiveEditor(), "Transform opens the model");
 		Transition toPlaying = statechart.getModel().getTransitions().stream()
 				.filter(t -> NodeKind.CONDITION.is(t.getSource()) && "playing".equals(t.getTarget().getName())).findFirst()
 				.orElseThrow(() -> new AssertionError("no choice of 'playing' in the transformed model"));
@@ -186,6 +188,12 @@ class EndToEndTest {
 		}
 		assertTrue(Ui.waitUntil(() -> project.getFolder("src/statecharts").exists() && Job.getJobManager().isIdle(), 30_000));
 		assertTrue(Ui.waitUntil(() -> project.getFile("src/activities/Scan/Scan.cpp").exists(), 30_000), "activity skeletons generated");
+		Shell[] summary = new Shell[1];
+		assertTrue(Ui.waitUntil(() -> (summary[0] = Arrays.stream(Ui.display().getShells())
+				.filter(shell -> shell.isVisible() && "Generated Code".equals(shell.getText())).findFirst().orElse(null)) != null, 10_000),
+				"a summary of the generation opens");
+		Ui.screenshotOf(summary[0], "47b-generation-summary");
+		summary[0].close();
 
 		// 8. the generated files, in the project
 		Path statecharts = Path.of(project.getFolder("src/statecharts").getLocationURI());

@@ -39,6 +39,7 @@ import org.junit.jupiter.api.MethodOrderer.OrderAnnotation;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestMethodOrder;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -50,6 +51,7 @@ import org.kse.ui.formula.FormulaEditor;
  * an error marker that appears while typing and goes when fixed, content assist, and the
  * statechart transformed from the formulas. Each step leaves a screenshot in target/screenshots.
  */
+@ExtendWith(UnexpectedDialogs.class)
 @TestMethodOrder(OrderAnnotation.class)
 class FormulaWorkflowTest {
 
@@ -65,7 +67,7 @@ class FormulaWorkflowTest {
 			project.create(null);
 		}
 		project.open(null);
-		Path goalie = Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.txt");
+		Path goalie = Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.liveness");
 		formula = project.getFile("Goalie.liveness");
 		formula.create(new ByteArrayInputStream(Files.readAllBytes(goalie)), true, null);
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 800);
@@ -186,6 +188,7 @@ class FormulaWorkflowTest {
 		assertTrue(!model.exists());
 		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand("org.kse.ui.transform", null);
 		assertTrue(Ui.waitUntil(model::exists, 30_000), "Goalie.stct written and refreshed");
+		assertEquals("Goalie.stct", Ui.page().getActiveEditor().getEditorInput().getName(), "the new model opens");
 		Model statechart = StatechartResources.load(Path.of(model.getLocationURI()));
 		List<String> activities = new ArrayList<>();
 		for (var contents = statechart.eAllContents(); contents.hasNext();) {

@@ -33,12 +33,14 @@ import org.eclipse.swt.widgets.Shell;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.handlers.IHandlerService;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * The KSE user manual as Eclipse help: its book in the help contents, every topic and every link
  * of it there, the examples it prints equal to the example files, and the help window opened
  * from Help > Help Contents, served on loopback only.
  */
+@ExtendWith(UnexpectedDialogs.class)
 class HelpTest {
 
 	private static final String BOOK = "KSE User Manual";
@@ -120,7 +122,7 @@ class HelpTest {
 		Matcher shown = Pattern.compile("<pre class=\"formula\" data-example=\"(\\w+)\">([^<]*)</pre>").matcher(examples);
 		int count = 0;
 		while (shown.find()) {
-			Path file = Path.of(System.getProperty("kse.examples"), shown.group(1), shown.group(1) + ".txt");
+			Path file = Path.of(System.getProperty("kse.examples"), shown.group(1), shown.group(1) + ".liveness");
 			assertEquals(Files.readString(file).strip(), shown.group(2).strip(), () -> "the manual shows " + file + " as it is");
 			count++;
 		}

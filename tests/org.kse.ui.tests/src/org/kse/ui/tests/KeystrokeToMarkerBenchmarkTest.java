@@ -19,6 +19,7 @@ import org.eclipse.jface.text.IDocument;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.ide.IDE;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.liveness.FormulaLoader;
 import org.kse.ui.formula.FormulaEditor;
 
@@ -27,6 +28,7 @@ import org.kse.ui.formula.FormulaEditor;
  * file, the time from an edit that breaks a formula to its error marker, and from the fix to the
  * marker's removal; the baseline is parsing and checking the same text alone, in the same run.
  */
+@ExtendWith(UnexpectedDialogs.class)
 class KeystrokeToMarkerBenchmarkTest {
 
 	private static final int LINES = 500;

@@ -26,6 +26,7 @@ import org.junit.jupiter.api.MethodOrderer.OrderAnnotation;
 import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestMethodOrder;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.ui.model.ModelFiles;
 import org.kse.ui.model.ModelMarkers;
 import org.kse.ui.wizards.NewProjectWizard;
@@ -35,6 +36,7 @@ import org.kse.ui.wizards.NewProjectWizard;
  * (a broken guard is marked with the transition's label), labeled, and generated into the
  * project's source folder, connected through the Generate dialog the first time.
  */
+@ExtendWith(UnexpectedDialogs.class)
 @TestMethodOrder(OrderAnnotation.class)
 class ModelWorkflowTest {
 
@@ -80,7 +82,7 @@ class ModelWorkflowTest {
 		for (String folder : List.of("models", "src/statecharts", "src/activities", "src/messages")) {
 			assertTrue(project.getFolder(folder).exists(), folder);
 		}
-		for (String file : List.of("models/Goalie.txt", "models/Goalie.stct", "models/Attacker.stct", "models/Defender.txt",
+		for (String file : List.of("models/Goalie.liveness", "models/Goalie.stct", "models/Attacker.stct", "models/Defender.liveness",
 				"src/activities/Kick/Kick.cpp", "src/activities/common/RobotIO.h")) {
 			assertTrue(project.getFile(file).exists(), file);
 		}
@@ -145,7 +147,9 @@ class ModelWorkflowTest {
 		assertTrue(Ui.waitUntil(Job::noneRunning, 30_000));
 		assertEquals(handWritten, Files.readString(Path.of(kick.getLocationURI())), "the hand-written Kick activity is kept");
 		assertTrue(project.getFile("src/statecharts/Goalie/CMakeLists.txt").exists());
+		assertTrue(Ui.waitUntil(() -> generationSummary() != null, 10_000), "a summary of the generation opens");
 		Ui.screenshot("13-generated");
+		generationSummary().close();
 	}
 
 	@Test
@@ -181,6 +185,8 @@ class ModelWorkflowTest {
 		assertTrue(Ui.waitUntil(statechart::exists, 30_000), "generated into the chosen folder");
 		assertEquals("/Team/generated", ModelFiles.sourceFolder(attacker).getFullPath().toString(), "and remembered");
 		assertTrue(Ui.waitUntil(Job::noneRunning, 30_000));
+		assertTrue(Ui.waitUntil(() -> generationSummary() != null, 10_000), "a summary of the generation opens");
+		generationSummary().close();
 	}
 
 	@Test
@@ -230,7 +236,7 @@ class ModelWorkflowTest {
 
 		Ui.select(goalie);
 		Ui.run("org.kse.ui.openFormula");
-		assertEquals("Goalie.txt", Ui.page().getActiveEditor().getEditorInput().getName());
+		assertEquals("Goalie.liveness", Ui.page().getActiveEditor().getEditorInput().getName());
 		assertTrue(Ui.page().getActiveEditor() instanceof org.kse.ui.formula.FormulaEditor);
 		Ui.page().closeAllEditors(false);
 	}
@@ -248,6 +254,8 @@ class ModelWorkflowTest {
 			IFile output = project.getFile("src/external.txt");
 			assertTrue(Ui.waitUntil(output::exists, 30_000), "the external generator ran and the folder was refreshed");
 			assertEquals("generated from " + Path.of(goalie.getLocationURI()), Files.readString(Path.of(output.getLocationURI())).strip());
+			assertTrue(Ui.waitUntil(() -> generationSummary() != null, 10_000), "the summary shows what the generator said");
+			generationSummary().close();
 		} finally {
 			preferences.remove(org.kse.ui.preferences.KsePreferences.GENERATOR);
 			preferences.remove(org.kse.ui.preferences.KsePreferences.GENERATOR_COMMAND);
@@ -351,6 +359,12 @@ class ModelWorkflowTest {
 		editor.getEditorSite().getActionBars().getGlobalActionHandler(org.eclipse.ui.actions.ActionFactory.UNDO.getId()).run();
 		assertEquals(before, transition.getTE(), "the edit is undoable");
 		Ui.page().closeAllEditors(false);
+	}
+
+	/** The window Generate opens when it ends; null until then. */
+	private static Shell generationSummary() {
+		return java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.isVisible() && "Generated Code".equals(shell.getText()))
+				.findFirst().orElse(null);
 	}
 
 	private static boolean shows(org.eclipse.swt.widgets.TreeItem[] items, String text) {

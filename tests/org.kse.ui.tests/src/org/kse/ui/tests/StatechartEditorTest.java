@@ -35,6 +35,7 @@ import org.eclipse.ui.views.properties.tabbed.TabbedPropertySheetPage;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 import org.kse.model.statechart.Variable;
@@ -49,6 +50,7 @@ import org.kse.ui.model.editor.properties.TransitionSection;
  * Model, Advanced), states and transitions added and deleted from the context menu, states
  * moved, every edit undoable; Revert, and a file changed on disk reloaded.
  */
+@ExtendWith(UnexpectedDialogs.class)
 class StatechartEditorTest {
 
 	private IFile file;

@@ -104,11 +104,17 @@ final class Ui {
 		return PlatformUI.getWorkbench().getDisplay();
 	}
 
-	/** Runs the event loop until the condition holds; false after {@code millis}. */
+	/**
+	 * Runs the event loop until the condition holds; false after {@code millis}. A dialog that no
+	 * test expected, seen meanwhile, fails the test at once ({@link UnexpectedDialogs}).
+	 */
 	static boolean waitUntil(BooleanSupplier condition, long millis) {
 		long end = System.currentTimeMillis() + millis;
 		Display display = display();
+		UnexpectedDialogs.install(display);
 		while (System.currentTimeMillis() < end) {
+			UnexpectedDialogs.lastWaitTurn = System.currentTimeMillis();
+			UnexpectedDialogs.failIfAny();
 			if (condition.getAsBoolean()) {
 				return true;
 			}
@@ -122,6 +128,11 @@ final class Ui {
 			}
 		}
 		return condition.getAsBoolean();
+	}
+
+	/** The test is about to show a window with this title on purpose (until it ends): it is not an unexpected dialog. */
+	static void expectDialog(String title) {
+		UnexpectedDialogs.expect(title);
 	}
 
 	/** Lets the workbench paint what changed. */

@@ -148,16 +148,31 @@ public class StatechartEditor extends EditorPart implements IEditingDomainProvid
 		stack.addCommandStackListener(stackListener);
 		ResourcesPlugin.getWorkspace().addResourceChangeListener(fileListener, IResourceChangeEvent.POST_CHANGE);
 		org.kse.ui.model.diagram.WorkspaceDiagramServer.register(Path.of(file.getLocationURI()), diagramHost);
+		// one press of Ctrl+Z on the diagram reaches these up to three times (KeyEchoes): it undoes one edit
 		undo = new Action("Undo") {
 			@Override
 			public void run() {
 				domain.getCommandStack().undo();
+			}
+
+			@Override
+			public void runWithEvent(org.eclipse.swt.widgets.Event event) {
+				if (!org.kse.ui.KeyEchoes.isEcho(ActionFactory.UNDO.getCommandId(), event)) {
+					run();
+				}
 			}
 		};
 		redo = new Action("Redo") {
 			@Override
 			public void run() {
 				domain.getCommandStack().redo();
+			}
+
+			@Override
+			public void runWithEvent(org.eclipse.swt.widgets.Event event) {
+				if (!org.kse.ui.KeyEchoes.isEcho(ActionFactory.REDO.getCommandId(), event)) {
+					run();
+				}
 			}
 		};
 		revert = new Action("Revert") {

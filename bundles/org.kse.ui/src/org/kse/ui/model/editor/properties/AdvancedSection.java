@@ -31,7 +31,7 @@ public class AdvancedSection extends ElementSection<EObject> {
 	@Override
 	public void setInput(IWorkbenchPart part, ISelection selection) {
 		super.setInput(part, selection);
-		if (editor != null) {
+		if (editor != null && table != null) {
 			table.setPropertySourceProvider(object -> object instanceof EObject element ? editor.propertySource(element) : null);
 			table.selectionChanged(part, selection);
 		}
@@ -39,7 +39,9 @@ public class AdvancedSection extends ElementSection<EObject> {
 
 	@Override
 	protected void fill() {
-		table.refresh();
+		if (table != null) {
+			table.refresh();
+		}
 	}
 
 	@Override
@@ -49,7 +51,10 @@ public class AdvancedSection extends ElementSection<EObject> {
 
 	@Override
 	public void dispose() {
-		table.dispose();
+		// sections are made for every tab but their controls only when their tab is first shown
+		if (table != null) {
+			table.dispose();
+		}
 		super.dispose();
 	}
 }
