@@ -253,6 +253,12 @@ export function clientKindCounts(root) {
     return counts;
 }
 
+/** Fits one state into the window (its insides large enough to see and to hit). */
+export async function fitTo(page, stateId) {
+    await page.evaluate(id => window.kse.dispatch({ kind: 'fit', elementIds: [id], padding: 24, maxZoom: 2, animate: false }), stateId);
+    await page.waitForTimeout(300);
+}
+
 /** Scrolls the diagram to put the element in the middle of the window (states out of view are not drawn). */
 export async function centre(page, id) {
     await page.evaluate(id => window.kse.dispatch({ kind: 'center', elementIds: [id], animate: false, retainZoom: true }), id);

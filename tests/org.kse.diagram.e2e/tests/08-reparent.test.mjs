@@ -8,6 +8,7 @@ import {
     clickState,
     closePages,
     copyGoalie,
+    fitTo,
     flatten,
     focusDiagram,
     launch,
@@ -33,12 +34,6 @@ async function openWhole(model) {
     await page.evaluate(() => window.kse.run('fit'));
     await page.waitForTimeout(700);
     return page;
-}
-
-/** Fits one state into the window (its insides large enough to see and to hit). */
-async function fitTo(page, stateId) {
-    await page.evaluate(id => window.kse.dispatch({ kind: 'fit', elementIds: [id], padding: 24, maxZoom: 2, animate: false }), stateId);
-    await page.waitForTimeout(300);
 }
 
 const attachedTo = (root, id) => transitions(root).filter(edge => edge.sourceId === id || edge.targetId === id).length;

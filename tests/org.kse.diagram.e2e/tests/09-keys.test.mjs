@@ -8,6 +8,7 @@ import {
     clickState,
     closePages,
     copyGoalie,
+    fitTo,
     flatten,
     focusDiagram,
     launch,
@@ -39,11 +40,6 @@ async function settled(page) {
         }
         last = now;
     }
-}
-
-async function fitTo(page, stateId) {
-    await page.evaluate(id => window.kse.dispatch({ kind: 'fit', elementIds: [id], padding: 24, maxZoom: 2, animate: false }), stateId);
-    await page.waitForTimeout(300);
 }
 
 test('arrow keys nudge the selected state by a grid step (10 px), Shift by five, and Ctrl+Z takes a nudge back', async () => {
