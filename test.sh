@@ -2,7 +2,8 @@
 # Runs every test:
 #   1. the Tycho build with all JUnit test bundles (inside OSGi; the workbench's UI tests under
 #      Xvfb, with screenshots), a smoke test of the workbench product archives, and the diagram
-#      notation's layout benchmark, the diagram server's benchmark, the diagram editor's
+#      notation's layout benchmark, the update site installed into a bare Eclipse, the workbench's
+#      start benchmark, the diagram server's benchmark, the diagram editor's
 #      end-to-end tests and benchmark in headless Chromium;
 #   2. the C++ runtime's GoogleTest suite, plainly and under AddressSanitizer and ThreadSanitizer;
 #   3. the engine conformance suite (tests/conformance: every case's statechart generated, run
@@ -36,6 +37,12 @@ echo "   screenshots of the UI tests: $(ls tests/org.kse.ui.tests/target/screens
 
 echo "== The workbench product: Linux archive started under Xvfb, Windows archive listed"
 tests/product/smoke.sh "$out/product"
+
+echo "== The update site installed with the p2 director into a bare Eclipse platform, started with a statechart"
+tests/product/install-into-eclipse.sh "$out/install-into-eclipse"
+
+echo "== Workbench start: KSE next to a bare Eclipse platform, warm (benchmark, figures only)"
+bench/workbench-start.sh 3 || echo "   (the start benchmark did not finish; figures are never a failure)"
 
 echo "== Diagram notation: a 1,000-state statechart opened and arranged with ELK (benchmark)"
 bench/notation.sh 2>&1 | grep -v -e '^log4j:' -e '^WARNING:'

@@ -21,6 +21,9 @@ for part in 'plugins/org.eclipse.swt.win32.win32.x86_64_' 'plugins/org.eclipse.e
 done
 if grep -q 'swt.gtk' <<< "$listing"; then fail "the Windows archive carries the Linux SWT"; fi
 
+echo "-- the start scripts"
+"$here/tests/product/start-scripts.sh" "$windows"
+
 echo "-- the Linux archive, started under Xvfb"
 rm -rf "$out/kse-workbench" "$out/workspace" "$out"/hs_err_*
 mkdir -p "$out/kse-workbench"
@@ -37,26 +40,39 @@ trap 'kill $xvfb 2>/dev/null || true; [ -n "${workbench:-}" ] && kill $workbench
 sleep 1
 
 # starts the workbench ($workbench: its pid) and waits for its window titled with the product
-# name ($elapsed: milliseconds since the start script ran)
+# name ($elapsed: milliseconds since the start script ran; $splash: whether KSE's splash, a
+# 480x280 window, showed before it)
 start_workbench() {
-  local started=$(date +%s%N)
-  DISPLAY="$display" KSE_JAVA_OPTS="-XX:ErrorFile=$out/hs_err_%p.log" "$out/kse-workbench/kse-workbench" -data "$out/workspace" -consoleLog > "$out/workbench-$1.log" 2>&1 &
+  local started tree
+  started=$(date +%s%N)
+  splash=no
+  DISPLAY="$display" XDG_CACHE_HOME="$out/cache" KSE_JAVA_OPTS="-XX:ErrorFile=$out/hs_err_%p.log" "$out/kse-workbench/kse-workbench" -data "$out/workspace" -consoleLog > "$out/workbench-$1.log" 2>&1 &
   workbench=$!
-  for _ in $(seq 1 1200); do
-    if DISPLAY="$display" xwininfo -root -tree 2>/dev/null | grep -q ' - KSE'; then
+  for _ in $(seq 1 2400); do
+    tree=$(DISPLAY="$display" xwininfo -root -tree 2>/dev/null || true)
+    grep -q ' 480x280+' <<< "$tree" && splash=yes
+    if grep -q ' - KSE' <<< "$tree"; then
       elapsed=$(( ($(date +%s%N) - started) / 1000000 ))
       return 0
     fi
     kill -0 $workbench 2>/dev/null || { cat "$out/workbench-$1.log" >&2; fail "the workbench exited"; }
-    sleep 0.1
+    sleep 0.05
   done
   fail "no workbench window after 120 s"
 }
 start_workbench cold
 first=$elapsed
+[ "$splash" = yes ] || fail "no splash before the workbench window"
 sleep 3
+if DISPLAY="$display" xwininfo -root -tree | grep -q ' 480x280+'; then fail "the splash is still up 3 s after the workbench window"; fi
+echo "   the splash showed, and closed when the workbench window was up"
 DISPLAY="$display" import -window root "$out/workbench.png"
 echo "   window after ${first} ms (first start); screenshot $out/workbench.png"
+if [ -s "$out/workspace/.metadata/.log" ]; then
+  cat "$out/workspace/.metadata/.log" >&2
+  fail "the workbench's .metadata/.log is not empty after a start"
+fi
+echo "   .metadata/.log clean after the start"
 DISPLAY="$display" xwininfo -root -tree | grep -o '"[^"]* - KSE[^"]*"' | head -1
 kill $workbench; wait $workbench 2>/dev/null || true
 start_workbench warm

@@ -75,6 +75,8 @@ class EndToEndTest {
 
 	@Test
 	void fromANewProjectToGeneratedCode() throws Exception {
+		Path log = org.eclipse.core.runtime.Platform.getLogFileLocation().toPath();
+		long logBefore = Files.exists(log) ? Files.size(log) : 0;
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 860);
 		// 1. a new KSE project, without the examples
 		Shell projectWizard = openWizard(init(new NewProjectWizard()));
@@ -182,6 +184,8 @@ class EndToEndTest {
 				Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
 			}
 		});
+		// a summary left open by an earlier test would be found first, then replaced by this run's
+		Arrays.stream(Ui.display().getShells()).filter(shell -> "Generated Code".equals(shell.getText())).forEach(Shell::close);
 		Ui.run("org.kse.ui.generate");
 		if (failure[0] != null) {
 			throw new AssertionError("driving the Generate dialog failed", failure[0]);
@@ -216,6 +220,10 @@ class EndToEndTest {
 		IDE.openEditor(Ui.page(), generated);
 		Ui.screenshot("48-generated-files");
 		Ui.page().closeAllEditors(false);
+		// the Error Log a user would open afterwards: nothing written to .metadata/.log on the way
+		byte[] all = Files.exists(log) ? Files.readAllBytes(log) : new byte[0];
+		String logged = all.length > logBefore ? new String(all, (int) logBefore, all.length - (int) logBefore, java.nio.charset.StandardCharsets.UTF_8) : "";
+		assertEquals("", logged, "the tutorial wrote to " + log);
 	}
 
 	private static boolean containsGuard(Path folder) throws IOException {
