@@ -7,6 +7,7 @@
 #include <functional>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -190,6 +191,40 @@ class EngineCore {
   std::vector<std::pair<std::string, std::chrono::milliseconds>> activity_limits_;
   bool watched_ = false;
 };
+
+// What more than one of the engine's source files needs.
+
+inline OrState* AsOr(State* state) { return static_cast<OrState*>(state); }
+
+inline const OrState* AsOr(const State* state) { return static_cast<const OrState*>(state); }
+
+inline std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
+
+// For the watchdog and Stop(): the model's label too, which is what a modeller sees.
+inline std::string DescribeLabelled(const State* state) {
+  if (state->Label() == state->Name()) return "state '" + state->Name() + "'";
+  return "state " + state->Label() + " '" + state->Name() + "'";
+}
+
+// "250 ms", "1.3 s": a watchdog limit is often below a second, a hang seldom.
+inline std::string Seconds(std::chrono::steady_clock::duration duration) {
+  char text[32];
+  const double seconds = std::chrono::duration<double>(duration).count();
+  if (seconds < 1) {
+    std::snprintf(text, sizeof text, "%.0f ms", seconds * 1000);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f s", seconds);
+  }
+  return text;
+}
+
+// Unwinds a step whose engine thread Stop() gave up on, once its call returns.
+struct GivenUp {};
+
+// Which engine thread this is, for GivenUp: only that thread unwinds, not a caller of
+// RunUntilStable() on another thread. Set by Loop().
+extern thread_local const EngineCore* current_loop_core;
+extern thread_local std::uint64_t current_loop_generation;
 
 }  // namespace statechart_engine::detail
 

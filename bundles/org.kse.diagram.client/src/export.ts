@@ -2,8 +2,20 @@
  * Saving the diagram as a picture: the SVG GLSP exports (RequestExportSvgAction → ExportSvgAction),
  * and a PNG drawn from that SVG on a canvas. Both are offered as downloads named after the model.
  */
-import { Action, ExportSvgAction, IActionHandler } from '@eclipse-glsp/client';
+import {
+    Action,
+    ExportSvgAction,
+    GChildElement,
+    GEdge,
+    GModelElement,
+    GModelRoot,
+    IActionHandler,
+    RequestExportSvgAction,
+    SelectionService,
+    isBoundsAware
+} from '@eclipse-glsp/client';
 import { injectable } from 'inversify';
+import { DiagramPage } from './diagram-page';
 
 let exportBaseName = 'statechart';
 
@@ -162,6 +174,43 @@ export async function svgToPng(svg: string, scale = 2): Promise<Blob> {
     } finally {
         URL.revokeObjectURL(url);
     }
+}
+
+/**
+ * The one selected composite (OR or AND) state: where it lies in diagram coordinates (children
+ * are placed relative to their parent) and the transitions between its insides; undefined when
+ * the selection is not a single composite. Ids are model paths: an inside's id extends its owner's.
+ */
+export function selectedComposite(selectionService: SelectionService): Focus | undefined {
+    const selected = selectionService.getSelectedElements();
+    if (selected.length !== 1 || !['state:or', 'state:and'].includes(selected[0].type)) {
+        return undefined;
+    }
+    const composite = selected[0] as unknown as GModelElement;
+    if (!isBoundsAware(composite)) {
+        return undefined;
+    }
+    const area = { ...composite.bounds };
+    let parent = (composite as unknown as GChildElement).parent as GModelElement | undefined;
+    while (parent && !(parent instanceof GModelRoot)) {
+        if (isBoundsAware(parent)) {
+            area.x += parent.bounds.x;
+            area.y += parent.bounds.y;
+        }
+        parent = (parent as unknown as GChildElement).parent as GModelElement | undefined;
+    }
+    const within = (id: string | undefined) => id !== undefined && id.startsWith(composite.id + '/');
+    const innerTransitions = Array.from(composite.root.index.all())
+        .filter(element => element instanceof GEdge && within(element.sourceId) && within(element.targetId))
+        .map(element => element.id);
+    return { area, id: composite.id, innerTransitions };
+}
+
+/** The diagram as a standalone SVG; with `selected`, only the selected composite when there is one. */
+export async function exportSvg(page: DiagramPage, selected = false): Promise<string> {
+    const focus = selected ? selectedComposite(page.selectionService) : undefined;
+    const response = await page.dispatcher.request(RequestExportSvgAction.create());
+    return standaloneSvg(response.svg, focus);
 }
 
 /** An ExportSvgAction nobody asked for by request (e.g. from the Ctrl+Shift+E key) is saved as <model>.svg. */

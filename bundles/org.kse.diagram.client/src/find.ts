@@ -5,6 +5,7 @@
  */
 import { Args, CenterAction, EditorContextService, IActionDispatcher, SelectAction, TYPES, ViewerOptions } from '@eclipse-glsp/client';
 import { inject, injectable } from 'inversify';
+import { focusDiagram } from './diagram-page';
 import { StateNode } from './model';
 
 function argument(state: StateNode, name: string): string {
@@ -56,11 +57,7 @@ export class FindBox {
         if (this.box) {
             this.box.hidden = true;
         }
-        this.diagramSvg()?.focus({ preventScroll: true });
-    }
-
-    protected diagramSvg(): (SVGElement & HTMLOrSVGElement) | null {
-        return document.getElementById(this.viewerOptions.baseDiv)?.querySelector('svg') ?? null;
+        focusDiagram(this.viewerOptions.baseDiv);
     }
 
     protected create(): HTMLInputElement {

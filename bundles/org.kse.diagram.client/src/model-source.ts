@@ -20,7 +20,7 @@ export class KseModelSource extends GLSPModelSource {
 
     override forwardToServer(action: Action): void {
         if (this.connectionLost()) {
-            // the page reconnects by itself (main.ts); until then nothing reaches the server, and an
+            // the page reconnects by itself (connection.ts); until then nothing reaches the server, and an
             // edit or a save the user asked for is not silently dropped
             if (Operation.is(action) || SaveModelAction.is(action)) {
                 report({ kind: 'connection', severity: 'WARNING', message: 'Not connected to the diagram server: reconnecting… (that last edit or save was not done)' });

@@ -93,6 +93,14 @@ export function report(entry: Omit<StatusEntry, 'time'>, timeout?: number): void
     }
 }
 
+/** Reports a failure of what was done (e.g. a toolbar button's action) as "<what> failed: <message>". */
+export function failed(what: string): (error: unknown) => void {
+    return error => {
+        const message = error instanceof Error ? error.message : String(error);
+        report({ kind: 'status', severity: 'ERROR', message: `${what} failed: ${message}` });
+    };
+}
+
 /**
  * What to show of a server message. A failed action arrives as "[GLSP-Server] Could not process
  * message: ActionMessage […]" whose details start with the cause ("cannot open x.stct: …") followed

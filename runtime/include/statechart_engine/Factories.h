@@ -1,40 +1,29 @@
 #ifndef STATECHART_ENGINE_FACTORIES_H
 #define STATECHART_ENGINE_FACTORIES_H
 
-#include <functional>
-#include <map>
 #include <memory>
-#include <mutex>
-#include <type_traits>
 #include <string>
-#include <vector>
+#include <type_traits>
 
 #include "kse/messaging/MessageHub.h"
 #include "statechart_engine/Interfaces.h"
+#include "statechart_engine/Registry.h"
 #include "statechart_engine/Statechart.h"
 
 namespace statechart_engine {
 
+// The registries are compiled once, in the library (Factories.cpp).
+extern template class Registry<IActivity>;
+
 /// Creates activities by name. Activities register themselves from a static object:
 ///   static statechart_engine::ActivityRegistrar<Scan> registrar("Scan");
-class ActivityFactory {
+class ActivityFactory : public Registry<IActivity> {
  public:
-  using Creator = std::function<std::unique_ptr<IActivity>()>;
-
+  /// Defined in the library, so that a process has one, however its parts are linked.
   static ActivityFactory& Instance();
 
-  /// Registers a creator; false (and a warning) when the name is taken, the first one stays.
-  bool Register(const std::string& name, Creator creator);
-  bool Unregister(const std::string& name);
-  /// A new activity, or nullptr (with a message on standard error) when the name is unknown.
-  std::unique_ptr<IActivity> Create(const std::string& name) const;
-  bool Contains(const std::string& name) const;
-  std::vector<std::string> Names() const;
-
  private:
-  ActivityFactory() = default;
-  mutable std::mutex mutex_;
-  std::map<std::string, Creator> creators_;
+  ActivityFactory() : Registry("activity") {}
 };
 
 template <class T>
@@ -58,27 +47,23 @@ class IStatechart {
   virtual Statechart& Chart() = 0;
 };
 
+extern template class Registry<IStatechart, kse::messaging::MessageHub&, const Options&>;
+
 /// Creates statecharts by name. Generated statecharts register themselves from a static object:
 ///   static statechart_engine::StatechartRegistrar<Goalie> registrar("Goalie");
-class StatechartFactory {
+class StatechartFactory
+    : public Registry<IStatechart, kse::messaging::MessageHub&, const Options&> {
  public:
-  using Creator =
-      std::function<std::unique_ptr<IStatechart>(kse::messaging::MessageHub&, const Options&)>;
-
   static StatechartFactory& Instance();
 
-  bool Register(const std::string& name, Creator creator);
-  bool Unregister(const std::string& name);
   /// A new statechart, or nullptr (with a message on standard error) when the name is unknown.
   std::unique_ptr<IStatechart> Create(const std::string& name, kse::messaging::MessageHub& hub,
-                                      Options options = {}) const;
-  bool Contains(const std::string& name) const;
-  std::vector<std::string> Names() const;
+                                      Options options = {}) const {
+    return Registry::Create(name, hub, options);
+  }
 
  private:
-  StatechartFactory() = default;
-  mutable std::mutex mutex_;
-  std::map<std::string, Creator> creators_;
+  StatechartFactory() : Registry("statechart") {}
 };
 
 /// Registers T, constructible from (MessageHub&, const Options&), under a name.

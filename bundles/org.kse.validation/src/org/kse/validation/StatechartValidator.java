@@ -17,6 +17,7 @@ import org.eclipse.xtext.validation.Issue;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.StandardMessages;
 import org.kse.model.NodeKind;
+import org.kse.model.StatechartRules;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.StatechartPackage;
@@ -88,9 +89,11 @@ public class StatechartValidator implements EValidator {
 		if (model.getNodes().size() != 1) {
 			error(diagnostics, ROOT, model, "the model needs exactly one root state; it has " + model.getNodes().size());
 		}
-		if (!model.getNodes().isEmpty() && !NodeKind.OR.is(model.getNodes().get(0))) {
-			error(diagnostics, ROOT, model.getNodes().get(0), "the root state must be an OR state, not "
-					+ (model.getNodes().get(0).getType() == null ? "a state without a type" : model.getNodes().get(0).getType()));
+		if (!model.getNodes().isEmpty()) {
+			String refusal = StatechartRules.rootRefusal(model.getNodes().get(0).getType());
+			if (refusal != null) {
+				error(diagnostics, ROOT, model.getNodes().get(0), refusal);
+			}
 		}
 		for (var it = model.eAllContents(); it.hasNext();) {
 			if (it.next() instanceof Node node && node.getChildren().isEmpty()) {
@@ -120,28 +123,27 @@ public class StatechartValidator implements EValidator {
 						+ "), which KSE does not open: a model is one file");
 			}
 		}
-		switch (kind) {
-			case AND -> {
-				for (Node child : node.getChildren()) {
-					if (!NodeKind.OR.is(child)) {
-						error(diagnostics, AND_CHILDREN, child, "an AND state holds only OR states (its regions), not " + child.getType());
-					}
-				}
+		if (!kind.isComposite()) {
+			if (!node.getChildren().isEmpty()) {
+				error(diagnostics, LEAF_CHILDREN, node, StatechartRules.holdRefusal(kind, NodeKind.BASIC));
 			}
-			case OR -> {
-				long starts = node.getChildren().stream().filter(NodeKind.START::is).count();
-				if (starts != 1) {
-					error(diagnostics, START_COUNT, node, "an OR state needs exactly one START state; it has " + starts);
-				}
-				long ends = node.getChildren().stream().filter(NodeKind.END::is).count();
-				if (ends > 1) {
-					error(diagnostics, END_COUNT, node, "an OR state has at most one END state; it has " + ends);
-				}
+			return;
+		}
+		for (Node child : node.getChildren()) {
+			NodeKind childKind = NodeKind.of(child);
+			String refusal = childKind == null ? null : StatechartRules.holdRefusal(kind, childKind);
+			if (refusal != null) {
+				error(diagnostics, AND_CHILDREN, child, refusal);
 			}
-			default -> {
-				if (!node.getChildren().isEmpty()) {
-					error(diagnostics, LEAF_CHILDREN, node, "a " + kind + " state cannot hold other states");
-				}
+		}
+		if (kind == NodeKind.OR) {
+			String starts = StatechartRules.startCountRefusal(node.getChildren().stream().filter(NodeKind.START::is).count());
+			if (starts != null) {
+				error(diagnostics, START_COUNT, node, starts);
+			}
+			String ends = StatechartRules.endCountRefusal(node.getChildren().stream().filter(NodeKind.END::is).count());
+			if (ends != null) {
+				error(diagnostics, END_COUNT, node, ends);
 			}
 		}
 	}
@@ -168,11 +170,13 @@ public class StatechartValidator implements EValidator {
 			error(diagnostics, DANGLING, transition, "the transition's " + (outside == source ? "source" : "target") + " is in another document ("
 					+ ((InternalEObject) outside).eProxyURI() + "), which KSE does not open: a model is one file");
 		} else {
-			if (NodeKind.START.is(target)) {
-				error(diagnostics, START_TARGET, transition, "a START state cannot be the target of a transition");
+			String into = StatechartRules.transitionRefusal(null, NodeKind.of(target));
+			if (into != null) {
+				error(diagnostics, START_TARGET, transition, into);
 			}
-			if (NodeKind.END.is(source)) {
-				error(diagnostics, END_SOURCE, transition, "an END state cannot be the source of a transition");
+			String outOf = StatechartRules.transitionRefusal(NodeKind.of(source), null);
+			if (outOf != null) {
+				error(diagnostics, END_SOURCE, transition, outOf);
 			}
 			if (source.getFather_of() != target.getFather_of()) {
 				warning(diagnostics, SAME_PARENT, transition, "source and target should be in the same composite state");

@@ -14,6 +14,7 @@ import org.eclipse.glsp.server.diagram.DiagramConfiguration;
 import org.eclipse.glsp.server.types.EdgeTypeHint;
 import org.eclipse.glsp.server.types.ShapeTypeHint;
 import org.kse.model.NodeKind;
+import org.kse.model.StatechartRules;
 
 /**
  * What the client may do with which element: states move, resize, delete and go into composites
@@ -43,15 +44,10 @@ public class StatechartDiagramConfiguration implements DiagramConfiguration {
 
 	@Override
 	public List<ShapeTypeHint> getShapeTypeHints() {
-		List<String> allStates = new ArrayList<>();
-		for (NodeKind kind : NodeKind.values()) {
-			allStates.add(StatechartGraph.type(kind));
-		}
 		List<ShapeTypeHint> hints = new ArrayList<>();
 		for (NodeKind kind : NodeKind.values()) {
-			List<String> containable = kind == NodeKind.OR ? allStates : kind == NodeKind.AND ? List.of(StatechartGraph.type(NodeKind.OR)) : List.of();
-			boolean resizable = kind == NodeKind.OR || kind == NodeKind.AND || kind == NodeKind.BASIC;
-			hints.add(new ShapeTypeHint(StatechartGraph.type(kind), true, true, resizable, true, containable));
+			List<String> containable = StatechartRules.mayHold(kind).stream().map(StatechartGraph::type).toList();
+			hints.add(new ShapeTypeHint(StatechartGraph.type(kind), true, true, StatechartRules.isResizable(kind), true, containable));
 		}
 		return hints;
 	}
@@ -61,10 +57,10 @@ public class StatechartDiagramConfiguration implements DiagramConfiguration {
 		List<String> sources = new ArrayList<>();
 		List<String> targets = new ArrayList<>();
 		for (NodeKind kind : NodeKind.values()) {
-			if (kind != NodeKind.END) {
+			if (StatechartRules.mayLeave(kind)) {
 				sources.add(StatechartGraph.type(kind));
 			}
-			if (kind != NodeKind.START) {
+			if (StatechartRules.mayEnter(kind)) {
 				targets.add(StatechartGraph.type(kind));
 			}
 		}

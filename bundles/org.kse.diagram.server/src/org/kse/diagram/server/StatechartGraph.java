@@ -91,7 +91,7 @@ public final class StatechartGraph {
 				.addArgument("label", node.getLabel() == null ? "" : node.getLabel())
 				.addArgument("name", node.getName() == null ? "" : node.getName());
 		if (kind != NodeKind.START && kind != NodeKind.END) {
-			boolean composite = !node.getChildren().isEmpty() || kind == NodeKind.OR || kind == NodeKind.AND;
+			boolean composite = !node.getChildren().isEmpty() || kind != null && kind.isComposite();
 			String text = kind == NodeKind.CONDITION ? "C" : Captions.of(node);
 			GLabelBuilder name = new GLabelBuilder(NAME).id(id + "#name").text(text);
 			// sized here, as the client would measure it: the client then has nothing to measure before it draws

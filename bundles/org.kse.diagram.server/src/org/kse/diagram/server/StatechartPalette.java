@@ -16,12 +16,10 @@ public class StatechartPalette implements ToolPaletteItemProvider {
 	@Override
 	public List<PaletteItem> getItems(Map<String, String> args) {
 		List<PaletteItem> states = new ArrayList<>();
-		String[][] kinds = { { "START", "Start", "circle-filled" }, { "END", "End", "record" }, { "CONDITION", "Condition", "circle-large-outline" },
-				{ "BASIC", "Basic (activity)", "symbol-method" }, { "OR", "OR (sequence)", "symbol-namespace" }, { "AND", "AND (parallel)", "split-horizontal" } };
 		int order = 0;
-		for (String[] kind : kinds) {
-			String type = StatechartGraph.type(NodeKind.valueOf(kind[0]));
-			states.add(new PaletteItem("palette-" + type, kind[1], new TriggerNodeCreationAction(type), kind[2], String.valueOf((char) ('a' + order++))));
+		for (NodeKind kind : NodeKind.THESIS_ORDER) {
+			String type = StatechartGraph.type(kind);
+			states.add(new PaletteItem("palette-" + type, kind.caption(), new TriggerNodeCreationAction(type), kind.icon(), String.valueOf((char) ('a' + order++))));
 		}
 		List<PaletteItem> transitions = List.of(new PaletteItem("palette-transition", "Transition", new TriggerEdgeCreationAction(StatechartGraph.TRANSITION),
 				"arrow-right", "a"));

@@ -22,6 +22,7 @@ import org.eclipse.emf.edit.provider.ReflectiveItemProviderAdapterFactory;
 import org.eclipse.emf.edit.provider.resource.ResourceItemProviderAdapterFactory;
 import org.kse.labeling.Copies;
 import org.kse.model.NodeKind;
+import org.kse.model.StatechartRules;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -93,26 +94,27 @@ public final class StatechartEdits {
 
 	/**
 	 * Why a state of this kind cannot go into {@code owner} (a state, or the model), or null when
-	 * it can: an AND state holds only OR regions, and only OR and AND states (and the top of the
-	 * model) hold states at all.
+	 * it can ({@link StatechartRules#holdRefusal}); the top of a model takes any state.
 	 */
 	public static String refusal(EObject owner, NodeKind kind) {
 		if (!(owner instanceof Node parent)) {
 			return null;
 		}
 		NodeKind parentKind = NodeKind.of(parent);
-		if (parentKind == NodeKind.AND) {
-			return kind == NodeKind.OR ? null : "an AND state holds only OR regions, not " + kind.name() + " states";
+		if (parentKind == null) {
+			return "a state of unknown type '" + parent.getType() + "' cannot hold other states";
 		}
-		if (parentKind == NodeKind.OR) {
-			return null;
-		}
-		return "a " + (parentKind == null ? parent.getType() : parentKind.name()) + " state cannot hold other states";
+		return StatechartRules.holdRefusal(parentKind, kind);
 	}
 
-	private static EObject owner(Model model, Object selected) {
+	/**
+	 * Where a state added or pasted with {@code selected} selected goes: into a selected composite
+	 * (or the root), else beside the selected state; into the model when nothing is selected.
+	 */
+	public static EObject owner(Model model, Object selected) {
 		if (selected instanceof Node node) {
-			boolean composite = NodeKind.OR.is(node) || NodeKind.AND.is(node) || node.eContainer() instanceof Model;
+			NodeKind kind = NodeKind.of(node);
+			boolean composite = kind != null && kind.isComposite() || node.eContainer() instanceof Model;
 			if (composite) {
 				return node;
 			}

@@ -28,6 +28,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.kse.testing.Models;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;

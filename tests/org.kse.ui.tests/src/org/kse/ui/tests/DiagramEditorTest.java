@@ -293,21 +293,10 @@ class DiagramEditorTest {
 	/** Answers the next dialog that offers {@code button} with it (within 20 s); holds the dialog's text once answered. */
 	private static java.util.concurrent.atomic.AtomicReference<String> answering(String button) {
 		var asked = new java.util.concurrent.atomic.AtomicReference<String>();
-		long deadline = System.currentTimeMillis() + 20_000;
-		Runnable[] look = new Runnable[1];
-		look[0] = () -> {
-			for (var shell : Ui.display().getShells()) {
-				if (shell.isVisible() && Ui.find(shell, org.eclipse.swt.widgets.Button.class).stream().anyMatch(b -> button.equals(b.getText().replace("&", "")))) {
-					asked.set(String.join(" ", Ui.find(shell, org.eclipse.swt.widgets.Label.class).stream().map(org.eclipse.swt.widgets.Label::getText).toList()));
-					Ui.press(shell, button);
-					return;
-				}
-			}
-			if (System.currentTimeMillis() < deadline) {
-				Ui.display().timerExec(100, look[0]);
-			}
-		};
-		Ui.display().timerExec(100, look[0]);
+		Ui.whenShown(shell -> Ui.offers(shell, button), dialog -> {
+			asked.set(String.join(" ", Ui.find(dialog, org.eclipse.swt.widgets.Label.class).stream().map(org.eclipse.swt.widgets.Label::getText).toList()));
+			Ui.press(dialog, button);
+		});
 		return asked;
 	}
 

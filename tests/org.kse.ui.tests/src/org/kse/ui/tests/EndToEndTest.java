@@ -171,25 +171,14 @@ class EndToEndTest {
 
 		// 7. Generate: the first time, the dialog asks for the source folder
 		Ui.select(model);
-		Throwable[] failure = new Throwable[1];
-		Ui.display().timerExec(800, () -> {
-			try {
-				Shell dialog = Arrays.stream(Ui.display().getShells())
-						.filter(shell -> shell.isVisible() && Ui.find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
-						.findFirst().orElseThrow(() -> new AssertionError("no Generate dialog"));
-				Ui.screenshotOf(dialog, "47-generate-dialog");
-				Ui.press(dialog, "Generate");
-			} catch (Throwable e) {
-				failure[0] = e;
-				Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
-			}
+		Ui.Answered generateDialog = Ui.whenShown(shell -> Ui.offers(shell, "Generate"), dialog -> {
+			Ui.screenshotOf(dialog, "47-generate-dialog");
+			Ui.press(dialog, "Generate");
 		});
 		// a summary left open by an earlier test would be found first, then replaced by this run's
 		Arrays.stream(Ui.display().getShells()).filter(shell -> "Generated Code".equals(shell.getText())).forEach(Shell::close);
 		Ui.run("org.kse.ui.generate");
-		if (failure[0] != null) {
-			throw new AssertionError("driving the Generate dialog failed", failure[0]);
-		}
+		generateDialog.check("Generate");
 		assertTrue(Ui.waitUntil(() -> project.getFolder("src/statecharts").exists() && Job.getJobManager().isIdle(), 30_000));
 		assertTrue(Ui.waitUntil(() -> project.getFile("src/activities/Scan/Scan.cpp").exists(), 30_000), "activity skeletons generated");
 		Shell[] summary = new Shell[1];

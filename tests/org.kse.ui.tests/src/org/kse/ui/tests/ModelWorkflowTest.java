@@ -158,29 +158,15 @@ class ModelWorkflowTest {
 		IFile attacker = project.getFile("models/Attacker.stct");
 		attacker.setPersistentProperty(ModelFiles.SOURCE_FOLDER, null);
 		Ui.select(attacker);
-		boolean[] shown = new boolean[1];
-		Throwable[] failure = new Throwable[1];
-		Ui.display().timerExec(800, () -> {
-			try {
-				Shell dialog = java.util.Arrays.stream(Ui.display().getShells())
-						.filter(shell -> shell.isVisible() && Ui.find(shell, Button.class).stream().anyMatch(b -> "Generate".equals(b.getText())))
-						.findFirst().orElseThrow(() -> new AssertionError("no Generate dialog"));
-				shown[0] = true;
-				Ui.screenshotOf(dialog, "14-generate-dialog");
-				Text folder = Ui.find(dialog, Text.class).stream().filter(text -> text.getText().startsWith("/Team")).findFirst()
-						.orElseThrow(() -> new AssertionError("no source folder field"));
-				folder.setText("/Team/generated");
-				Ui.press(Ui.button(dialog, "Generate"));
-			} catch (Throwable e) {
-				failure[0] = e;
-				java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
-			}
+		Ui.Answered generateDialog = Ui.whenShown(shell -> Ui.offers(shell, "Generate"), dialog -> {
+			Ui.screenshotOf(dialog, "14-generate-dialog");
+			Text folder = Ui.find(dialog, Text.class).stream().filter(text -> text.getText().startsWith("/Team")).findFirst()
+					.orElseThrow(() -> new AssertionError("no source folder field"));
+			folder.setText("/Team/generated");
+			Ui.press(Ui.button(dialog, "Generate"));
 		});
 		Ui.run("org.kse.ui.generate");
-		if (failure[0] != null) {
-			throw new AssertionError("driving the Generate dialog failed", failure[0]);
-		}
-		assertTrue(shown[0], "the Generate dialog asked for the folder");
+		generateDialog.check("Generate (asking for the folder)");
 		IFile statechart = project.getFile("generated/statecharts/Attacker/Attacker.cpp");
 		assertTrue(Ui.waitUntil(statechart::exists, 30_000), "generated into the chosen folder");
 		assertEquals("/Team/generated", ModelFiles.sourceFolder(attacker).getFullPath().toString(), "and remembered");
@@ -213,24 +199,14 @@ class ModelWorkflowTest {
 	void editActivityOpensItsCppAndOpenFormulaItsFormulas() throws Exception {
 		IFile goalie = project.getFile("models/Goalie.stct");
 		Ui.select(goalie);
-		Throwable[] failure = new Throwable[1];
-		Ui.display().timerExec(800, () -> {
-			try {
-				Shell dialog = java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> "Edit Activity".equals(shell.getText())).findFirst()
-						.orElseThrow(() -> new AssertionError("no Edit Activity dialog"));
-				Ui.find(dialog, Text.class).get(0).setText("Kick");
-				Ui.settle(300);
-				Ui.screenshotOf(dialog, "15-edit-activity");
-				Ui.press(Ui.button(dialog, "OK"));
-			} catch (Throwable e) {
-				failure[0] = e;
-				java.util.Arrays.stream(Ui.display().getShells()).filter(shell -> shell.getParent() != null).forEach(Shell::close);
-			}
+		Ui.Answered editActivity = Ui.whenShown(shell -> "Edit Activity".equals(shell.getText()), dialog -> {
+			Ui.find(dialog, Text.class).get(0).setText("Kick");
+			Ui.settle(300);
+			Ui.screenshotOf(dialog, "15-edit-activity");
+			Ui.press(Ui.button(dialog, "OK"));
 		});
 		Ui.run("org.kse.ui.editActivity");
-		if (failure[0] != null) {
-			throw new AssertionError("driving the Edit Activity dialog failed", failure[0]);
-		}
+		editActivity.check("Edit Activity");
 		assertEquals("Kick.cpp", Ui.page().getActiveEditor().getEditorInput().getName(), "the activity's C++ is open");
 		Ui.screenshot("16-activity-open");
 

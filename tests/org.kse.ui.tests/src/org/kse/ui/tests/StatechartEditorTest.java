@@ -306,21 +306,12 @@ class StatechartEditorTest {
 		assertTrue(editor.isDirty());
 		Ui.page().activate(editor);
 		editor.getViewer().setSelection(new StructuredSelection(kick), true);
-		boolean[] asked = new boolean[1];
-		Ui.display().timerExec(800, () -> Arrays.stream(Ui.display().getShells()).filter(shell -> shell.isVisible() && shell.getParent() != null)
-				.findFirst().ifPresent(dialog -> {
-					Ui.screenshotOf(dialog, "25-save-before-label");
-					try {
-						Ui.press(dialog, "Save");
-						asked[0] = true;
-					} finally {
-						if (!dialog.isDisposed()) {
-							dialog.close();
-						}
-					}
-				}));
+		Ui.Answered asked = Ui.whenShown(shell -> shell.getParent() != null && Ui.offers(shell, "Save"), dialog -> {
+			Ui.screenshotOf(dialog, "25-save-before-label");
+			Ui.press(dialog, "Save");
+		});
 		Ui.run("org.kse.ui.label");
-		assertTrue(asked[0], "the user is asked to save the edited model first");
+		asked.check("save-before-labelling (the user is asked to save the edited model first)");
 		assertTrue(Ui.waitUntil(() -> !editor.isDirty() && "0.2.2.3.5".equals(state("Kick").getLabel()), 20_000),
 				"saved, labelled, and the editor shows the labels again");
 	}

@@ -135,6 +135,61 @@ final class Ui {
 		UnexpectedDialogs.expect(title);
 	}
 
+	/** What {@link #whenShown} did: whether it answered a dialog, and how that failed if it did. */
+	static final class Answered {
+		volatile boolean done;
+		volatile Throwable failure;
+
+		/** Throws what went wrong while answering the dialog, or that none was shown. */
+		void check(String what) {
+			if (failure != null) {
+				throw new AssertionError("answering the " + what + " dialog failed", failure);
+			}
+			if (!done) {
+				throw new AssertionError("no " + what + " dialog was shown");
+			}
+		}
+	}
+
+	/**
+	 * Answers the next visible window that {@code which} picks with {@code answer}, looking every
+	 * 100 ms for 20 s: a dialog opened by a command may show late on a loaded machine. A failing
+	 * answer closes the dialogs, so the command returns and the test can report it.
+	 */
+	static Answered whenShown(java.util.function.Predicate<Shell> which, java.util.function.Consumer<Shell> answer) {
+		Answered answered = new Answered();
+		long deadline = System.currentTimeMillis() + 20_000;
+		Runnable[] look = new Runnable[1];
+		look[0] = () -> {
+			for (Shell shell : display().getShells()) {
+				if (shell.isVisible() && which.test(shell)) {
+					try {
+						answer.accept(shell);
+						answered.done = true;
+					} catch (Throwable e) {
+						answered.failure = e;
+						for (Shell dialog : display().getShells()) {
+							if (dialog.getParent() != null && !dialog.isDisposed()) {
+								dialog.close();
+							}
+						}
+					}
+					return;
+				}
+			}
+			if (System.currentTimeMillis() < deadline) {
+				display().timerExec(100, look[0]);
+			}
+		};
+		display().timerExec(100, look[0]);
+		return answered;
+	}
+
+	/** Whether a window offers a button with this label (mnemonics ignored). */
+	static boolean offers(Shell shell, String label) {
+		return find(shell, Button.class).stream().anyMatch(button -> label.equals(button.getText().replace("&", "")));
+	}
+
 	/** Lets the workbench paint what changed. */
 	static void settle(long millis) {
 		waitUntil(() -> false, millis);

@@ -49,7 +49,7 @@ public class CreateStateHandler extends StatechartOperationHandler<CreateNodeOpe
 		}
 		Node created = StatechartEdits.createState(state.getModel(), owner, kind);
 		Bounds size = Shapes.size(created);
-		if (kind == NodeKind.OR || kind == NodeKind.AND) {
+		if (kind.isComposite()) {
 			// an empty composite is drawn to be filled: room for a few states and their arrows
 			size = new Bounds(0, 0, Math.max(NEW_COMPOSITE_WIDTH, size.width()), NEW_COMPOSITE_HEIGHT);
 		}

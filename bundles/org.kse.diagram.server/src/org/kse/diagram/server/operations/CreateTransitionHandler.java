@@ -7,6 +7,7 @@ import org.eclipse.glsp.server.operations.CreateEdgeOperation;
 import org.eclipse.glsp.server.operations.CreateOperationHandler;
 import org.kse.diagram.server.StatechartGraph;
 import org.kse.model.NodeKind;
+import org.kse.model.StatechartRules;
 import org.kse.model.edit.StatechartEdits;
 import org.kse.model.statechart.Node;
 
@@ -27,11 +28,10 @@ public class CreateTransitionHandler extends StatechartOperationHandler<CreateEd
 	protected Command command(CreateEdgeOperation operation) {
 		Node source = state(operation.getSourceElementId());
 		Node target = state(operation.getTargetElementId());
-		if (NodeKind.END.is(source)) {
-			throw refused("no transition leaves an END state (" + describe(source) + ")");
-		}
-		if (NodeKind.START.is(target)) {
-			throw refused("no transition enters a START state (" + describe(target) + ")");
+		NodeKind from = NodeKind.of(source);
+		String refusal = StatechartRules.transitionRefusal(from, NodeKind.of(target));
+		if (refusal != null) {
+			throw refused(refusal + " (" + describe(from != null && !StatechartRules.mayLeave(from) ? source : target) + ")");
 		}
 		return StatechartEdits.newTransition(state.getDomain(), state.getModel(), source, target);
 	}

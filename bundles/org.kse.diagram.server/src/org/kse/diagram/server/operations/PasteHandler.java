@@ -14,7 +14,6 @@ import org.kse.diagram.server.BoundsCommand;
 import org.kse.labeling.Copies;
 import org.kse.model.NodeKind;
 import org.kse.model.edit.StatechartEdits;
-import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.notation.Arrange;
 import org.kse.notation.Bounds;
@@ -59,13 +58,7 @@ public class PasteHandler extends StatechartOperationHandler<PasteOperation> {
 
 	/** A composite selected takes the paste; a simple state passes it to its parent. */
 	private EObject owner(EObject selected) {
-		if (selected instanceof Node node) {
-			if (NodeKind.OR.is(node) || NodeKind.AND.is(node) || node.eContainer() instanceof Model) {
-				return node;
-			}
-			return node.eContainer();
-		}
-		return state.getModel();
+		return StatechartEdits.owner(state.getModel(), selected);
 	}
 
 	private void offsetTopStates(List<Node> tops, Map<Node, Bounds> placed, EObject owner, GPoint mouse) {

@@ -1,0 +1,378 @@
+#include "EngineCore.h"
+
+#include <algorithm>
+#include <exception>
+#include <limits>
+#include <utility>
+
+namespace statechart_engine::detail {
+
+namespace {
+
+constexpr std::size_t kStepsPerBatch = 1000;  // engine thread: check Stop() at least this often
+// How often the engine thread looks at its clock when no wake-up time is near (a ManualClock
+// moved by someone who did not call Wake()).
+constexpr auto kClockLook = std::chrono::seconds(1);
+
+}  // namespace
+
+thread_local const EngineCore* current_loop_core = nullptr;
+thread_local std::uint64_t current_loop_generation = 0;
+
+// ---------------------------------------------------------------------------------------------
+// Activities
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::Launch(BasicState* state) {
+  if (!state->activity_) {
+    return;
+  }
+  state->launches_.fetch_add(1, std::memory_order_relaxed);
+  if (!pool_) {
+    RunActivity(state);
+    UnwindIfGivenUp();
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    state->region_->running_.fetch_add(1, std::memory_order_acq_rel);
+    running_activities_.fetch_add(1, std::memory_order_acq_rel);
+    if (state->running_.load(std::memory_order_acquire)) {
+      // Entered again (after an outer transition left it) while the last run goes on: one
+      // IActivity object never runs twice at once, so the worker runs it again afterwards.
+      ++state->relaunches_;
+      return;
+    }
+    state->running_.store(true, std::memory_order_release);
+  }
+  pool_->Post([this, state] {
+    do {
+      RunActivity(state);
+    } while (FinishActivity(state));
+  });
+}
+
+void EngineCore::RunActivity(BasicState* state) {
+  IActivity* activity = state->activity_.get();
+  const char* failure = nullptr;
+  std::string message;
+  try {
+    WatchedCall watched(SlotOf(state), CallKind::Activity, state);
+    activity->Execute();
+    return;
+  } catch (const std::exception& e) {
+    failure = "threw";
+    message = e.what();
+  } catch (...) {
+    failure = "threw a non-standard exception";
+  }
+  ++activity_failures_;
+  std::string name;
+  try {
+    name = activity->GetName();
+  } catch (...) {
+    name = "?";
+  }
+  Report(EngineReport::Kind::Failure, "activity '" + name + "' of " + DescribeLabelled(state) +
+                                          " " + failure +
+                                          (message.empty() ? std::string() : ": " + message));
+}
+
+bool EngineCore::FinishActivity(BasicState* state) {
+  bool again = false;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    if (abandoned_.load(std::memory_order_relaxed)) {
+      return false;  // the statechart is gone: its region (maybe the root itself) with it
+    }
+    state->region_->running_.fetch_sub(1, std::memory_order_acq_rel);
+    running_activities_.fetch_sub(1, std::memory_order_acq_rel);
+    if (state->relaunches_ > 0) {
+      --state->relaunches_;
+      again = true;
+    } else {
+      state->running_.store(false, std::memory_order_release);
+    }
+    woken_ = true;
+    ++wake_generation_;
+  }
+  wake_cv_.notify_all();
+  return again;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Running
+// ---------------------------------------------------------------------------------------------
+
+bool EngineCore::TakeWake() {
+  bool woken;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    woken = woken_;
+    woken_ = false;
+  }
+  const kse::messaging::TimePoint now = hub_.GetClock().Now();
+  for (kse::messaging::Blackboard* board : blackboards_) {
+    woken = board->TakeDueWakeups(now) || woken;
+  }
+  return woken;
+}
+
+bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  while (StepRoot()) {
+    if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
+      Report(EngineReport::Kind::Warning, "RunUntilStable stopped after " +
+                                              std::to_string(max_transitions) +
+                                              " transitions: the statechart does not settle");
+      return false;
+    }
+  }
+  return true;
+}
+
+bool EngineCore::RunIfWoken() {
+  Activate();
+  if (!TakeWake()) {
+    return false;
+  }
+  StepUntilQuiet(std::numeric_limits<std::size_t>::max(), 0);
+  return true;
+}
+
+bool EngineCore::RunUntilStable(std::size_t max_transitions) {
+  Activate();
+  const std::size_t first = transitions_taken_.load(std::memory_order_relaxed);
+  for (;;) {
+    if (TakeWake()) {
+      if (!StepUntilQuiet(max_transitions, first)) {
+        return false;
+      }
+      continue;
+    }
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    if (woken_) {
+      continue;
+    }
+    if (running_activities_.load(std::memory_order_acquire) == 0) {
+      return true;
+    }
+    wake_cv_.wait(lock, [this] {
+      return woken_ || running_activities_.load(std::memory_order_acquire) == 0;
+    });
+  }
+}
+
+void EngineCore::Wake() {
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    ++wake_generation_;
+  }
+  wake_cv_.notify_all();
+}
+
+std::optional<kse::messaging::TimePoint> EngineCore::NextWakeup() const {
+  std::optional<kse::messaging::TimePoint> next;
+  for (const kse::messaging::Blackboard* board : blackboards_) {
+    auto wakeup = board->NextWakeup();
+    if (wakeup && (!next || *wakeup < *next)) {
+      next = wakeup;
+    }
+  }
+  return next;
+}
+
+void EngineCore::Start() {
+  Activate();
+  std::lock_guard<std::mutex> control(control_mutex_);
+  if (thread_.joinable()) {
+    return;
+  }
+  std::uint64_t generation;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    generation = loop_generation_.load(std::memory_order_relaxed) + 1;
+    loop_generation_.store(generation, std::memory_order_release);
+    live_loops_.push_back(generation);
+    woken_ = true;  // a (re)started engine looks at its configuration first, as Monas' did
+  }
+  thread_ = std::thread([this, generation] { Loop(generation); });
+  started_.store(true, std::memory_order_release);
+}
+
+void EngineCore::Stop() {
+  std::lock_guard<std::mutex> control(control_mutex_);
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::min<std::chrono::steady_clock::duration>(
+                            std::max(options_.stop_limit, std::chrono::milliseconds(0)),
+                            std::chrono::hours(24 * 365));
+  std::vector<std::string> left;
+  if (thread_.joinable()) {
+    std::uint64_t generation;
+    bool ended;
+    {
+      std::unique_lock<std::mutex> lock(wake_mutex_);
+      generation = loop_generation_.load(std::memory_order_relaxed);
+      loop_generation_.store(generation + 1, std::memory_order_release);  // retires the thread
+      ++wake_generation_;
+      wake_cv_.notify_all();
+      ended = wake_cv_.wait_until(lock, deadline, [&] {
+        return std::find(live_loops_.begin(), live_loops_.end(), generation) == live_loops_.end();
+      });
+      if (!ended) {
+        // From now on the thread unwinds as soon as its call returns (UnwindIfGivenUp).
+        given_up_generation_.store(std::max(given_up_generation_.load(), generation));
+      }
+    }
+    if (ended) {
+      thread_.join();
+    } else {
+      const std::string call = CurrentCall(engine_slot_);
+      left.push_back("the engine thread" + (call.empty() ? std::string() : ", in the " + call));
+      thread_.detach();
+    }
+    started_.store(false, std::memory_order_release);
+  }
+  {
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    wake_cv_.wait_until(lock, deadline, [this] {
+      return running_activities_.load(std::memory_order_acquire) == 0;
+    });
+  }
+  if (running_activities_.load(std::memory_order_acquire) > 0) {
+    for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) {
+      if (slot_states_[slot]->IsRunning()) {
+        left.push_back(DescribeCall(CallKind::Activity, slot_states_[slot]));
+      }
+    }
+  }
+  if (!left.empty()) {
+    std::string text = "Stop() stopped waiting after " +
+                       Seconds(std::max(options_.stop_limit, std::chrono::milliseconds(0))) +
+                       " for calls that have not returned; they go on alone: ";
+    for (std::size_t i = 0; i < left.size(); ++i) text += (i ? "; " : "") + left[i];
+    Report(EngineReport::Kind::Abandoned, std::move(text));
+  }
+}
+
+bool EngineCore::Shutdown() {
+  if (abandoned_.load()) {
+    return true;
+  }
+  Stop();
+  {
+    // An engine thread Stop() gave up on unwinds once its call returns, but it must be inside
+    // that call (not between two) when the states are freed: wait for it to be, or to end.
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    while (!live_loops_.empty() && !engine_slot_.Busy() &&
+           std::chrono::steady_clock::now() < deadline) {
+      wake_cv_.wait_for(lock, std::chrono::milliseconds(1));
+    }
+  }
+  if (watched_) {
+    Watchdog::Instance().Unwatch(this);
+    watched_ = false;
+  }
+  bool abandon;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    abandon = !live_loops_.empty() || running_activities_.load(std::memory_order_acquire) > 0;
+    if (abandon) abandoned_.store(true);
+  }
+  if (!abandon) {
+    pool_.reset();
+    return false;
+  }
+  const std::size_t activities = running_activities_.load();
+  std::size_t threads;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    threads = live_loops_.size();
+  }
+  if (pool_) pool_->Close(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
+  EngineReport report;
+  report.kind = EngineReport::Kind::Abandoned;
+  report.chart = chart_name_;
+  report.text = "destroyed while " + std::to_string(activities) + " activit" +
+                (activities == 1 ? "y" : "ies") + " and " + std::to_string(threads) +
+                " engine thread" + (threads == 1 ? "" : "s") +
+                " still ran; the engine's own objects are kept for them to return to";
+  // The reporter still belongs to the caller here (it is destroying the statechart now).
+  Deliver(report, true);
+  return true;
+}
+
+// Monas' engine thread: `while (Step());`, then sleep until an activity returns or a timeout
+// worker wakes it. Waking more often (Wake(), the periodic look at the clock) changes nothing:
+// without a reason the engine does not step.
+void EngineCore::Loop(std::uint64_t generation) {
+  current_loop_core = this;
+  current_loop_generation = generation;
+  const kse::messaging::Clock& clock = hub_.GetClock();
+  for (;;) {
+    std::uint64_t seen;
+    {
+      std::lock_guard<std::mutex> lock(wake_mutex_);
+      if (Retired(generation)) {
+        break;
+      }
+      seen = wake_generation_;
+    }
+    std::optional<kse::messaging::TimePoint> wakeup;
+    try {
+      if (TakeWake()) {
+        std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+        std::size_t steps = 0;
+        bool more = false;
+        while (!Retired(generation) && StepRoot()) {
+          if (++steps >= kStepsPerBatch) {
+            more = true;  // look at Stop() between batches, then go on
+            break;
+          }
+        }
+        if (more) {
+          std::lock_guard<std::mutex> wake(wake_mutex_);
+          woken_ = true;
+          continue;
+        }
+      }
+      wakeup = NextWakeup();
+    } catch (const GivenUp&) {
+      break;  // the step is cut short: what it would touch may be freed
+    } catch (const std::exception& e) {
+      Report(EngineReport::Kind::Warning, std::string("engine step failed: ") + e.what());
+    } catch (...) {
+      Report(EngineReport::Kind::Warning, "engine step failed");
+    }
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    auto woken = [&] { return Retired(generation) || woken_ || wake_generation_ != seen; };
+    auto wait = std::chrono::duration_cast<std::chrono::steady_clock::duration>(kClockLook);
+    if (wakeup) {
+      const auto until = *wakeup - clock.Now();
+      wait = std::max(std::chrono::steady_clock::duration::zero(), std::min(wait, until));
+    }
+    wake_cv_.wait_for(lock, wait, woken);
+  }
+  std::lock_guard<std::mutex> lock(wake_mutex_);
+  live_loops_.erase(std::remove(live_loops_.begin(), live_loops_.end(), generation), live_loops_.end());
+  wake_cv_.notify_all();
+}
+
+std::vector<std::string> EngineCore::ActiveStates() const {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::vector<std::string> names;
+  for (const State* state : states_) {
+    if (state->IsActive()) {
+      names.push_back(state->Name());
+    }
+  }
+  return names;
+}
+
+void EngineCore::SetObserver(Statechart::Observer observer) {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  observer_ = std::move(observer);
+}
+
+}  // namespace statechart_engine::detail

@@ -1,0 +1,265 @@
+#include "EngineCore.h"
+
+#include <exception>
+
+namespace statechart_engine::detail {
+
+namespace {
+
+constexpr std::size_t kMaxConnectorChain = 64;
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Stepping
+// ---------------------------------------------------------------------------------------------
+
+bool EngineCore::Step() {
+  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  if (!IsActivated()) {
+    Activate();
+  }
+  return StepRoot();
+}
+
+bool EngineCore::StepRoot() {
+  // Written only under engine_mutex_: a plain increment, no locked read-modify-write.
+  step_number_.store(step_number_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  return StepState(&chart_);
+}
+
+// Monas' Step() of each kind of state. A region's running flag stops everything in the region;
+// the composite's own transitions come after its inside could not move, whatever is active in
+// it (not only its END).
+bool EngineCore::StepState(State* state) {
+  switch (state->kind_) {
+    case StateKind::Or: {
+      if (state->region_->IsRunning()) {
+        return false;
+      }
+      State* child = AsOr(state)->active_child_;
+      if (child != nullptr && StepState(child)) {
+        return true;
+      }
+      return TryTransitions(state);
+    }
+    case StateKind::And: {
+      // Whether a region was running is taken before the regions step, as Monas did.
+      bool running = false;
+      for (const State* region : state->children_) {
+        running = running || AsOr(region)->IsRunning();
+      }
+      bool fired = false;
+      for (State* region : state->children_) {
+        fired = StepState(region) || fired;
+      }
+      if (fired) {
+        return true;
+      }
+      return !running && TryTransitions(state);
+    }
+    case StateKind::End:
+      return false;
+    default:
+      return TryTransitions(state);
+  }
+}
+
+bool EngineCore::EvalGuard(TransitionSegmentBase* transition) {
+  ICondition* condition = transition->condition_.get();
+  if (condition == nullptr) {
+    return true;
+  }
+  bool holds = false;
+  try {
+    WatchedCall watched(engine_slot_, CallKind::Guard, transition);
+    holds = condition->Eval();
+  } catch (const std::exception& e) {
+    ++guard_failures_;
+    Report(EngineReport::Kind::Failure,
+           "guard of '" + transition->Name() + "' threw (taken as false): " + e.what());
+  } catch (...) {
+    ++guard_failures_;
+    Report(EngineReport::Kind::Failure,
+           "guard of '" + transition->Name() + "' threw (taken as false)");
+  }
+  UnwindIfGivenUp();
+  return holds;
+}
+
+bool EngineCore::FindChain(State* connector, std::size_t depth) {
+  if (depth >= kMaxConnectorChain) {
+    Report(EngineReport::Kind::Warning, "condition connector chain deeper than " +
+                                            std::to_string(kMaxConnectorChain) + " at " +
+                                            Describe(connector) + ", not taken");
+    return false;
+  }
+  for (TransitionSegmentBase* next : connector->outgoing_) {
+    if (!EvalGuard(next)) continue;
+    chain_.push_back(next);
+    if (next->target_->kind_ != StateKind::Condition || FindChain(next->target_, depth + 1)) {
+      return true;
+    }
+    chain_.pop_back();
+  }
+  return false;
+}
+
+bool EngineCore::TryTransitions(State* state) {
+  if (state->region_->IsRunning()) {
+    return false;
+  }
+  for (TransitionSegmentBase* transition : state->outgoing_) {
+    if (!EvalGuard(transition)) continue;
+    if (transition->target_->kind_ != StateKind::Condition) {
+      Fire(transition);
+      return true;
+    }
+    chain_.clear();
+    chain_.push_back(transition);
+    if (!FindChain(transition->target_, 0)) {
+      continue;
+    }
+    // Every guard of the chain has been evaluated; now the segments fire in order.
+    std::vector<TransitionSegmentBase*> chain;
+    chain.swap(chain_);
+    for (TransitionSegmentBase* segment : chain) {
+      Fire(segment);
+    }
+    chain.clear();
+    chain_.swap(chain);  // keep the capacity
+    return true;
+  }
+  return false;
+}
+
+void EngineCore::Fire(TransitionSegmentBase* transition) {
+  Exit(transition->exit_top_);
+  if (IAction* action = transition->action_.get()) {
+    try {
+      WatchedCall watched(engine_slot_, CallKind::Action, transition);
+      action->Execute();
+    } catch (const std::exception& e) {
+      ++action_failures_;
+      Report(EngineReport::Kind::Failure, "action of '" + transition->Name() + "' threw: " + e.what());
+    } catch (...) {
+      ++action_failures_;
+      Report(EngineReport::Kind::Failure, "action of '" + transition->Name() + "' threw");
+    }
+    UnwindIfGivenUp();
+  }
+  EnterAlong(transition->entry_path_, 0);
+  transitions_taken_.store(transitions_taken_.load(std::memory_order_relaxed) + 1,
+                          std::memory_order_relaxed);
+  if (observer_) {
+    try {
+      WatchedCall watched(engine_slot_, CallKind::Observer, transition);
+      observer_(*transition);
+    } catch (const std::exception& e) {
+      ++action_failures_;
+      Report(EngineReport::Kind::Failure,
+             "observer threw on '" + transition->Name() + "': " + e.what());
+    } catch (...) {
+      ++action_failures_;
+      Report(EngineReport::Kind::Failure, "observer threw on '" + transition->Name() + "'");
+    }
+    UnwindIfGivenUp();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Entering and leaving
+// ---------------------------------------------------------------------------------------------
+
+void EngineCore::Enter(State* state) {
+  if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
+    AsOr(state->parent_)->active_child_ = state;
+  }
+  state->active_.store(true, std::memory_order_relaxed);
+  try {
+    WatchedCall watched(engine_slot_, CallKind::Entry, state);
+    state->OnEntry();
+  } catch (const std::exception& e) {
+    ++action_failures_;
+    Report(EngineReport::Kind::Failure, "OnEntry of " + Describe(state) + " threw: " + e.what());
+  } catch (...) {
+    ++action_failures_;
+    Report(EngineReport::Kind::Failure, "OnEntry of " + Describe(state) + " threw");
+  }
+  UnwindIfGivenUp();
+}
+
+void EngineCore::Complete(State* state) {
+  switch (state->kind_) {
+    case StateKind::Or:
+      EnterDefault(AsOr(state)->start_);
+      break;
+    case StateKind::And:
+      for (State* region : state->children_) {
+        EnterDefault(region);
+      }
+      break;
+    case StateKind::Basic:
+      Launch(static_cast<BasicState*>(state));
+      break;
+    default:
+      break;
+  }
+}
+
+void EngineCore::EnterDefault(State* state) {
+  Enter(state);
+  Complete(state);
+}
+
+void EngineCore::EnterAlong(const std::vector<State*>& path, std::size_t index) {
+  State* state = path[index];
+  Enter(state);
+  if (index + 1 == path.size()) {
+    Complete(state);
+    return;
+  }
+  State* next = path[index + 1];
+  if (state->kind_ == StateKind::And) {
+    for (State* region : state->children_) {
+      if (region == next) {
+        EnterAlong(path, index + 1);
+      } else {
+        EnterDefault(region);
+      }
+    }
+  } else {
+    EnterAlong(path, index + 1);
+  }
+}
+
+void EngineCore::Exit(State* state) {
+  if (state->kind_ == StateKind::Or) {
+    if (State* child = AsOr(state)->active_child_) {
+      Exit(child);
+    }
+  } else if (state->kind_ == StateKind::And) {
+    for (auto it = state->children_.rbegin(); it != state->children_.rend(); ++it) {
+      if ((*it)->IsActive()) {
+        Exit(*it);
+      }
+    }
+  }
+  try {
+    WatchedCall watched(engine_slot_, CallKind::Exit, state);
+    state->OnExit();
+  } catch (const std::exception& e) {
+    ++action_failures_;
+    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw: " + e.what());
+  } catch (...) {
+    ++action_failures_;
+    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw");
+  }
+  UnwindIfGivenUp();
+  state->active_.store(false, std::memory_order_relaxed);
+  if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
+    AsOr(state->parent_)->active_child_ = nullptr;
+  }
+}
+
+}  // namespace statechart_engine::detail
