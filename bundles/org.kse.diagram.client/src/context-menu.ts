@@ -28,7 +28,7 @@ import {
     isSelected
 } from '@eclipse-glsp/client';
 import { inject, injectable } from 'inversify';
-import { StateNode, TransitionEdge } from './model';
+import { StateNode, TransitionEdge, holdRefusal } from './model';
 import { fitStatesAction } from './viewport';
 
 /**
@@ -102,10 +102,11 @@ export class KseMenuItems implements IContextMenuItemProvider {
             if (element instanceof StateNode && element.isComposite) {
                 // a new state goes where the menu was opened, if that lies inside the composite
                 const location = lastMousePosition ? getAbsolutePositionByPoint(root as GModelRoot, lastMousePosition) : undefined;
-                const kind = element.kind === 'and' ? 'or' : 'basic';
+                // a BASIC state where the rule book allows one, else an OR region (an AND state's)
+                const kind = holdRefusal(root, element.kind, 'basic') === undefined ? 'basic' : 'or';
                 items.push({
                     id: 'add-inside',
-                    label: element.kind === 'and' ? 'Add OR region inside' : 'Add BASIC state inside',
+                    label: kind === 'or' ? 'Add OR region inside' : 'Add BASIC state inside',
                     group: 'b-create',
                     actions: [CreateNodeOperation.create(`state:${kind}`, { containerId: element.id, location })]
                 });

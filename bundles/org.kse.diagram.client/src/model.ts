@@ -34,8 +34,6 @@ export const STATE_KINDS: readonly StateKind[] = ['start', 'end', 'condition', '
 /** The kinds drawn as discs (their edges end on the circle, not on a box). */
 const ROUND_KINDS: ReadonlySet<string> = new Set(['start', 'end', 'condition']);
 
-/** The kinds that contain other states and show their name in a header. */
-const COMPOSITE_KINDS: ReadonlySet<string> = new Set(['or', 'and']);
 
 export function stateKindOf(type: string): StateKind {
     const kind = type.startsWith(STATE_PREFIX) ? type.substring(STATE_PREFIX.length) : 'unknown';
@@ -52,6 +50,15 @@ function stringArg(element: GModelElement, name: string): string {
     return value === undefined || value === null ? '' : String(value);
 }
 
+/**
+ * Why a state of kind `child` cannot go into one of kind `parent`, as the server's rule book says
+ * (sent with the graph), or undefined when it can.
+ */
+export function holdRefusal(root: GModelElement, parent: StateKind, child: StateKind): string | undefined {
+    const refusal = argsOf(root)[`holdRefusal:${parent}/${child}`];
+    return refusal === undefined || refusal === null ? undefined : String(refusal);
+}
+
 /** A state of any kind; what it looks like is decided by its kind. */
 export class StateNode extends GNode {
     get kind(): StateKind {
@@ -62,8 +69,9 @@ export class StateNode extends GNode {
         return ROUND_KINDS.has(this.kind);
     }
 
+    /** Whether the state holds others (and shows its name in a header): the server's rule book says which kinds do. */
     get isComposite(): boolean {
-        return COMPOSITE_KINDS.has(this.kind);
+        return stringArg(this.root, 'compositeKinds').split(' ').includes(this.kind);
     }
 
     /** The state's hierarchical label (e.g. "0.2.1"), shown at the top right of composites. */

@@ -36,7 +36,7 @@ import {
     ChangeBoundsOperation
 } from '@eclipse-glsp/client';
 import { injectable } from 'inversify';
-import { StateNode } from './model';
+import { StateNode, holdRefusal } from './model';
 
 export const CSS_DROP_TARGET = 'kse-drop-target';
 export const CSS_DROP_REFUSED = 'kse-drop-refused';
@@ -96,9 +96,7 @@ export function dropAt(root: GModelRoot, dragged: StateNode[], point: Point): Dr
     }
     for (const state of reparented) {
         if (!isContainable(target) || !target.isContainableElement(state)) {
-            const reason = target.isComposite
-                ? `an ${target.kind.toUpperCase()} state holds only OR regions, not ${state.kind.toUpperCase()} states`
-                : `a ${target.kind.toUpperCase()} state cannot hold other states`;
+            const reason = holdRefusal(root, target.kind, state.kind) ?? `the ${target.kind.toUpperCase()} state cannot hold it`;
             return { container, reparented, refusal: `Cannot move ${describe(state)} into ${describe(target)}: ${reason}` };
         }
     }

@@ -15,6 +15,7 @@ import org.eclipse.glsp.graph.builder.impl.GGraphBuilder;
 import org.eclipse.glsp.graph.builder.impl.GLabelBuilder;
 import org.eclipse.glsp.graph.builder.impl.GNodeBuilder;
 import org.kse.model.NodeKind;
+import org.kse.model.StatechartRules;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
@@ -62,9 +63,35 @@ public final class StatechartGraph {
 		}, new java.util.HashMap<>());
 	}
 
+	/**
+	 * The rule book's answers the page needs before it asks the server (ADR 0018): which kinds
+	 * hold other states ({@code compositeKinds}, e.g. "or and"), and why a kind cannot go into
+	 * another ({@code holdRefusal:<parent>/<child>}), so a refused drop says what the server would.
+	 */
+	private static void rules(GGraphBuilder graph) {
+		StringBuilder composite = new StringBuilder();
+		for (NodeKind parent : NodeKind.values()) {
+			if (parent.isComposite()) {
+				composite.append(composite.isEmpty() ? "" : " ").append(kindName(parent));
+			}
+			for (NodeKind child : NodeKind.values()) {
+				String refusal = StatechartRules.holdRefusal(parent, child);
+				if (refusal != null) {
+					graph.addArgument("holdRefusal:" + kindName(parent) + "/" + kindName(child), refusal);
+				}
+			}
+		}
+		graph.addArgument("compositeKinds", composite.toString());
+	}
+
+	private static String kindName(NodeKind kind) {
+		return kind.name().toLowerCase(Locale.ROOT);
+	}
+
 	/** The graph of the model with states where {@code bounds} says; {@code ids} receives the element of each id. */
 	public static GGraph of(Model model, Function<Node, Bounds> bounds, Map<String, EObject> ids) {
 		GGraphBuilder graph = new GGraphBuilder(GRAPH).id(ROOT);
+		rules(graph);
 		ids.put(ROOT, model);
 		for (Node root : model.getNodes()) {
 			graph.add(state(root, bounds, ids));

@@ -1,10 +1,10 @@
-package org.kse.languages.tests;
+package org.kse.liveness.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.kse.languages.tests.Issues.describe;
+import static org.kse.testing.Issues.describe;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -17,6 +17,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.kse.liveness.FormulaLoader;
+import org.kse.testing.ParserFuzz;
+import org.kse.testing.Issues;
 
 /**
  * Broken formulas as people write them: every error says in the formula's own words what is
@@ -87,7 +89,7 @@ class FormulaSyntaxMessagesTest {
 	}
 
 	private static Arguments broken(String text, String firstError, String says) {
-		return Arguments.of(FuzzTest.escape(text), text, firstError, says);
+		return Arguments.of(ParserFuzz.escape(text), text, firstError, says);
 	}
 
 	@ParameterizedTest(name = "{0}")
@@ -126,12 +128,12 @@ class FormulaSyntaxMessagesTest {
 
 	/** Line and column at least 1 and where the offset points; offset and length inside the text. */
 	private static void assertPositioned(String text, Issue issue) {
-		String where = issue.getSeverity() + " '" + issue.getMessage() + "' of " + FuzzTest.escape(text);
+		String where = issue.getSeverity() + " '" + issue.getMessage() + "' of " + ParserFuzz.escape(text);
 		assertTrue(issue.getLineNumber() != null && issue.getColumn() != null && issue.getOffset() != null && issue.getLength() != null,
 				() -> "no position: " + where);
 		assertTrue(issue.getLineNumber() >= 1 && issue.getColumn() >= 1, () -> "line or column below 1: " + where);
 		assertTrue(issue.getOffset() >= 0 && issue.getOffset() + issue.getLength() <= text.length(), () -> "outside the text: " + where);
-		int[] expected = FuzzTest.lineAndColumn(text, issue.getOffset());
+		int[] expected = ParserFuzz.lineAndColumn(text, issue.getOffset());
 		assertEquals(expected[0] + ":" + expected[1], issue.getLineNumber() + ":" + issue.getColumn(),
 				() -> "line and column do not match the offset: " + where);
 	}

@@ -1,29 +1,26 @@
-package org.kse.languages.tests;
+package org.kse.expression.tests;
 
-import static org.junit.jupiter.api.Assertions.assertTrue;
-
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
 import javax.xml.parsers.DocumentBuilderFactory;
 
+import org.kse.testing.Models;
 import org.w3c.dom.Element;
 import org.w3c.dom.NodeList;
 
-/** Text taken from the original KSE's Goalie model, kept in the repository under tests/data/legacy-kse. */
+/**
+ * Transition expressions taken from the original KSE's Goalie model, kept in the repository
+ * under tests/data/legacy-kse ({@link Models#LEGACY}).
+ */
 final class Legacy {
-
-	static final Path DIRECTORY = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");
 
 	private Legacy() {
 	}
 
 	static Path goalieStatechart() {
-		Path path = DIRECTORY.resolve("Goalie/Goalie.stct");
-		assertTrue(Files.isRegularFile(path), () -> "legacy model missing: " + path.toAbsolutePath());
-		return path;
+		return Models.legacy("Goalie/Goalie.stct");
 	}
 
 	/** The TE attribute of every transition of the legacy Goalie.stct, XML-unescaped, in file order. */

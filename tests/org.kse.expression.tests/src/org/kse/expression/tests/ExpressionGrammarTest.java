@@ -1,4 +1,4 @@
-package org.kse.languages.tests;
+package org.kse.expression.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -6,11 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.kse.languages.tests.Issues.assertIssue;
-import static org.kse.languages.tests.Issues.assertNoErrors;
-import static org.kse.languages.tests.Issues.assertNoIssues;
-import static org.kse.languages.tests.Issues.assertOnlyError;
-import static org.kse.languages.tests.Issues.describe;
+import static org.kse.testing.Issues.assertIssue;
+import static org.kse.testing.Issues.assertNoErrors;
+import static org.kse.testing.Issues.assertNoIssues;
+import static org.kse.testing.Issues.assertOnlyError;
+import static org.kse.testing.Issues.describe;
 
 import java.util.List;
 import java.util.stream.Stream;
@@ -36,6 +36,7 @@ import org.kse.expression.transitionExpression.StringLiteral;
 import org.kse.expression.transitionExpression.TimeoutAction;
 import org.kse.expression.transitionExpression.TransitionExpression;
 import org.kse.expression.validation.TransitionExpressionValidator;
+import org.kse.testing.Issues;
 
 /** Transition expressions {@code event[condition]/actions} (docs/original-kse.md §6). */
 class ExpressionGrammarTest {

@@ -1,4 +1,4 @@
-package org.kse.languages.tests;
+package org.kse.liveness.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -6,11 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.kse.languages.tests.Issues.assertIssue;
-import static org.kse.languages.tests.Issues.assertNoErrors;
-import static org.kse.languages.tests.Issues.assertNoIssues;
-import static org.kse.languages.tests.Issues.assertOnlyError;
-import static org.kse.languages.tests.Issues.describe;
+import static org.kse.testing.Issues.assertIssue;
+import static org.kse.testing.Issues.assertNoErrors;
+import static org.kse.testing.Issues.assertNoIssues;
+import static org.kse.testing.Issues.assertOnlyError;
+import static org.kse.testing.Issues.describe;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -39,6 +39,8 @@ import org.kse.liveness.liveness.Repetition;
 import org.kse.liveness.liveness.RepetitionKind;
 import org.kse.liveness.liveness.Replication;
 import org.kse.liveness.validation.LivenessValidator;
+import org.kse.testing.Issues;
+import org.kse.testing.Models;
 
 /** The liveness formula language (docs/original-kse.md §2): what parses, and where every error is reported. */
 class LivenessGrammarTest {
@@ -194,8 +196,7 @@ class LivenessGrammarTest {
 
 	@Test
 	void theLegacyGoalieFileLoadsWithoutIssues() throws IOException {
-		Path path = Legacy.DIRECTORY.resolve("Goalie/Goalie.txt");
-		assertTrue(Files.isRegularFile(path), () -> "legacy file missing: " + path.toAbsolutePath());
+		Path path = Models.legacy("Goalie/Goalie.txt");
 		String text = Files.readString(path, StandardCharsets.UTF_8);
 		FormulaLoader.Result result = FormulaLoader.load(text, URI.createFileURI(path.toAbsolutePath().toString()));
 		assertNoIssues(text, result.issues());

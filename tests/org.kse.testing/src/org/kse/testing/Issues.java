@@ -1,4 +1,4 @@
-package org.kse.languages.tests;
+package org.kse.testing;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,11 +11,11 @@ import java.util.stream.Collectors;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 
-/** Assertions over Xtext issues, with messages that show every issue of the text. */
-final class Issues {
+/** Assertions over Xtext issues (of the liveness and expression languages), with messages that show every issue of the text. */
+public final class Issues {
 
 	/** The code Xtext gives to every syntax error. */
-	static final String SYNTAX = "org.eclipse.xtext.diagnostics.Diagnostic.Syntax";
+	public static final String SYNTAX = "org.eclipse.xtext.diagnostics.Diagnostic.Syntax";
 
 	/** Words of the parser generator that mean nothing to someone writing formulas. */
 	private static final Pattern PARSER_JARGON = Pattern.compile(
@@ -26,13 +26,13 @@ final class Issues {
 	}
 
 	/** The first piece of parser jargon in a message, or null when it has none. */
-	static String jargonIn(String message) {
+	public static String jargonIn(String message) {
 		Matcher matcher = PARSER_JARGON.matcher(message == null ? "" : message);
 		return matcher.find() ? matcher.group() : null;
 	}
 
 	/** One line per issue: "ERROR 2:7 code message". */
-	static String describe(List<Issue> issues) {
+	public static String describe(List<Issue> issues) {
 		if (issues.isEmpty()) {
 			return "(no issues)";
 		}
@@ -42,19 +42,19 @@ final class Issues {
 				.collect(Collectors.joining("\n  ", "\n  ", ""));
 	}
 
-	static List<Issue> withSeverity(List<Issue> issues, Severity severity) {
+	public static List<Issue> withSeverity(List<Issue> issues, Severity severity) {
 		return issues.stream().filter(issue -> issue.getSeverity() == severity).toList();
 	}
 
-	static List<Issue> errors(List<Issue> issues) {
+	public static List<Issue> errors(List<Issue> issues) {
 		return withSeverity(issues, Severity.ERROR);
 	}
 
-	static void assertNoIssues(String text, List<Issue> issues) {
+	public static void assertNoIssues(String text, List<Issue> issues) {
 		assertTrue(issues.isEmpty(), () -> "expected no issues for\n" + text + "\nbut got" + describe(issues));
 	}
 
-	static void assertNoErrors(String text, List<Issue> issues) {
+	public static void assertNoErrors(String text, List<Issue> issues) {
 		assertTrue(errors(issues).isEmpty(), () -> "expected no errors for\n" + text + "\nbut got" + describe(issues));
 	}
 
@@ -62,7 +62,7 @@ final class Issues {
 	 * Asserts that exactly one issue of this severity and code exists, at the given line and
 	 * column (1-based), and returns it.
 	 */
-	static Issue assertIssue(List<Issue> issues, Severity severity, String code, int line, int column) {
+	public static Issue assertIssue(List<Issue> issues, Severity severity, String code, int line, int column) {
 		List<Issue> matching = issues.stream().filter(issue -> issue.getSeverity() == severity && code.equals(issue.getCode())).toList();
 		assertEquals(1, matching.size(), () -> "expected exactly one " + severity + " " + code + ", got" + describe(issues));
 		Issue issue = matching.get(0);
@@ -72,7 +72,7 @@ final class Issues {
 	}
 
 	/** Asserts that the only error is one with this code at the given line and column. */
-	static Issue assertOnlyError(List<Issue> issues, String code, int line, int column) {
+	public static Issue assertOnlyError(List<Issue> issues, String code, int line, int column) {
 		assertEquals(1, errors(issues).size(), () -> "expected exactly one error, got" + describe(issues));
 		return assertIssue(issues, Severity.ERROR, code, line, column);
 	}
