@@ -67,6 +67,10 @@ public final class ProtoParser {
 
 	private void parseTopLevelStatement() {
 		Token t = peek();
+		String keyword = t.is(Kind.IDENT) ? t.text() : "";
+		if (!keyword.equals("syntax")) {
+			seenDeclaration = true; // even an empty statement: protoc wants syntax first of all
+		}
 		if (t.isSymbol(';')) {
 			next();
 			return;
@@ -75,10 +79,6 @@ public final class ProtoParser {
 			report(t, "unmatched '}'");
 			next();
 			return;
-		}
-		String keyword = t.is(Kind.IDENT) ? t.text() : "";
-		if (!keyword.equals("syntax")) {
-			seenDeclaration = true;
 		}
 		switch (keyword) {
 		case "syntax" -> parseSyntax();
@@ -169,7 +169,11 @@ public final class ProtoParser {
 			skipStatement();
 			return;
 		}
-		imports.add(new ProtoImport(path, modifier, pathToken.line(), pathToken.column()));
+		if (imports.stream().anyMatch(i -> i.path().equals(path))) {
+			report(pathToken, "the file \"" + path + "\" is imported twice");
+		} else {
+			imports.add(new ProtoImport(path, modifier, pathToken.line(), pathToken.column()));
+		}
 		expectSemicolon("after the import");
 	}
 

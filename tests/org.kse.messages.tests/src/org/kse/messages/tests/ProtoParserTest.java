@@ -337,6 +337,10 @@ class ProtoParserTest {
 				""";
 		ProtoFile file = parse(text);
 		assertEquals(pos(text, "syntax"), at(problem(file.problems(), "must be the first statement")));
+		// Even an empty statement comes too early, as for protoc (found by ProtocAgreementTest).
+		String afterSemicolon = ";\nsyntax = \"proto2\";\n";
+		assertEquals(pos(afterSemicolon, "syntax"),
+				at(problem(parse(afterSemicolon).problems(), "must be the first statement")));
 
 		String proto3 = """
 				syntax = "proto3";
@@ -346,6 +350,20 @@ class ProtoParserTest {
 		ProtoFile p3 = parse(proto3);
 		assertEquals(pos(proto3, "1; }"), at(problem(p3.problems(), "first value of a proto3 enum must be zero")));
 		assertEquals(pos(proto3, "required"), at(problem(p3.problems(), "'required' is not allowed in proto3")));
+	}
+
+	@Test
+	void aFileImportedTwiceIsReportedOnce() {
+		// protoc: Import "a.proto" was listed twice (found by ProtocAgreementTest).
+		String text = """
+				syntax = "proto2";
+				import "a.proto";
+				import public "a.proto";
+				import "b.proto";
+				""";
+		ProtoFile file = parse(text);
+		assertEquals(pos(text, "\"a.proto\";\nimport \"b"), at(problem(file.problems(), "imported twice")));
+		assertEquals(List.of("a.proto", "b.proto"), file.imports().stream().map(ProtoImport::path).toList());
 	}
 
 	@Test
