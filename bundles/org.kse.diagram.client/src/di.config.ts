@@ -47,12 +47,12 @@ import {
     ExpressionLabel,
     NAME_LABEL,
     NameLabel,
-    STATE_KINDS,
     STATE_PREFIX,
     StateNode,
     TRANSITION,
     TransitionEdge
 } from './model';
+import { ANY_STATE, KseModelRegistry, KseViewRegistry } from './registries';
 import { StatusLineHandler } from './status-line';
 import { GridButtonSync } from './toolbar-sync';
 import { ExpressionLabelView, NameLabelView, StateView, TransitionView } from './views';
@@ -64,9 +64,12 @@ export const kseDiagramModule = new FeatureModule(
         bindOrRebind(context, TYPES.LogLevel).toConstantValue(LogLevel.warn);
 
         configureDefaultModelElements(context);
-        for (const kind of STATE_KINDS) {
-            configureModelElement(context, STATE_PREFIX + kind, kind === 'basic' ? BasicStateNode : StateNode, StateView);
-        }
+        // every kind the server's rule book names is a StateNode drawn by StateView (registries.ts);
+        // a BASIC state edits its name on a double click, so it has its own, registered first
+        bindOrRebind(context, TYPES.SModelRegistry).to(KseModelRegistry).inSingletonScope();
+        bindOrRebind(context, TYPES.ViewRegistry).to(KseViewRegistry).inSingletonScope();
+        configureModelElement(context, STATE_PREFIX + 'basic', BasicStateNode, StateView);
+        configureModelElement(context, ANY_STATE, StateNode, StateView);
         configureModelElement(context, NAME_LABEL, NameLabel, NameLabelView, { enable: [editLabelFeature], disable: [alignFeature] });
         // placed by the server's layout (its top-left corner), neither along the edge nor aligned by the client
         configureModelElement(context, EXPRESSION_LABEL, ExpressionLabel, ExpressionLabelView, {

@@ -16,6 +16,7 @@ import {
 } from '@eclipse-glsp/client';
 import { injectable } from 'inversify';
 import { DiagramPage } from './diagram-page';
+import { StateNode } from './model';
 
 let exportBaseName = 'statechart';
 
@@ -183,7 +184,7 @@ export async function svgToPng(svg: string, scale = 2): Promise<Blob> {
  */
 export function selectedComposite(selectionService: SelectionService): Focus | undefined {
     const selected = selectionService.getSelectedElements();
-    if (selected.length !== 1 || !['state:or', 'state:and'].includes(selected[0].type)) {
+    if (selected.length !== 1 || !(selected[0] instanceof StateNode && selected[0].isComposite)) {
         return undefined;
     }
     const composite = selected[0] as unknown as GModelElement;

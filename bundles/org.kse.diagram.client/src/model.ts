@@ -29,7 +29,8 @@ export const TRANSITION = 'transition';
 
 export type StateKind = 'start' | 'end' | 'condition' | 'basic' | 'or' | 'and' | 'unknown';
 
-export const STATE_KINDS: readonly StateKind[] = ['start', 'end', 'condition', 'basic', 'or', 'and', 'unknown'];
+/** The kinds the page knows how to draw; a kind the server adds before it has a drawing is drawn as 'unknown'. */
+const DRAWN_KINDS: readonly StateKind[] = ['start', 'end', 'condition', 'basic', 'or', 'and', 'unknown'];
 
 /** The kinds drawn as discs (their edges end on the circle, not on a box). */
 const ROUND_KINDS: ReadonlySet<string> = new Set(['start', 'end', 'condition']);
@@ -37,7 +38,7 @@ const ROUND_KINDS: ReadonlySet<string> = new Set(['start', 'end', 'condition']);
 
 export function stateKindOf(type: string): StateKind {
     const kind = type.startsWith(STATE_PREFIX) ? type.substring(STATE_PREFIX.length) : 'unknown';
-    return (STATE_KINDS as readonly string[]).includes(kind) ? (kind as StateKind) : 'unknown';
+    return (DRAWN_KINDS as readonly string[]).includes(kind) ? (kind as StateKind) : 'unknown';
 }
 
 function argsOf(element: GModelElement): Args {
