@@ -10,13 +10,13 @@ import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IProgressMonitor;
-import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.SubMonitor;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.model.StatechartResources;
+import org.kse.model.statechart.Model;
 import org.kse.transform.FormulaTransformation;
 
 /** Formulas of a workspace file (or of an editor's text) into a statechart file, with problem markers. */
@@ -42,28 +42,28 @@ public final class FormulaTransformer {
 		}
 	}
 
-	/** Transforms {@code text} (the formula file's content) into {@code model}; an error status names the first problem. */
-	public static IStatus transform(IFile formula, String text, IFile model, IProgressMonitor monitor) throws CoreException {
-		SubMonitor progress = SubMonitor.convert(monitor, "Transforming " + formula.getName(), 3);
-		progress.subTask("reading the formulas");
+	/** The formulas of {@code text} (the formula file's content) transformed; their problems shown as markers on the file. */
+	public static FormulaTransformation.Outcome outcome(IFile formula, String text, IProgressMonitor monitor) {
+		SubMonitor progress = SubMonitor.convert(monitor, "Transforming " + formula.getName(), 1);
 		FormulaTransformation.Outcome outcome = FormulaTransformation.run(text, URI.createPlatformResourceURI(formula.getFullPath().toString(), true),
 				null);
-		progress.worked(2);
+		progress.worked(1);
 		FormulaChecker.show(formula, outcome.issues(), text.length());
-		if (outcome.model() == null) {
-			long errors = outcome.issues().stream().filter(issue -> issue.getSeverity() == Severity.ERROR).count();
-			Issue first = outcome.issues().stream().filter(issue -> issue.getSeverity() == Severity.ERROR).findFirst().orElse(null);
-			return Status.error(formula.getName() + " has " + errors + (errors == 1 ? " error" : " errors")
-					+ (first == null ? "" : "; the first, at line " + first.getLineNumber() + ", column " + first.getColumn() + ": " + first.getMessage())
-					+ ". See the Problems view.");
-		}
-		progress.subTask("writing " + model.getName());
-		try {
-			StatechartResources.save(outcome.model(), Path.of(model.getLocationURI()));
-		} catch (IOException e) {
-			return Status.error("cannot write " + model.getFullPath() + ": " + e.getMessage(), e);
-		}
-		model.refreshLocal(IResource.DEPTH_ZERO, progress.split(1));
-		return Status.OK_STATUS;
+		return outcome;
+	}
+
+	/** Why an outcome has no statechart, naming the first error (for a status line or a wizard page). */
+	public static String problem(IFile formula, FormulaTransformation.Outcome outcome) {
+		long errors = outcome.issues().stream().filter(issue -> issue.getSeverity() == Severity.ERROR).count();
+		Issue first = outcome.issues().stream().filter(issue -> issue.getSeverity() == Severity.ERROR).findFirst().orElse(null);
+		return formula.getName() + " has " + errors + (errors == 1 ? " error" : " errors")
+				+ (first == null ? "" : "; the first, at line " + first.getLineNumber() + ", column " + first.getColumn() + ": " + first.getMessage())
+				+ ". See the Problems view.";
+	}
+
+	/** Writes a transformed statechart to {@code target} (atomically) and lets the workspace see it. */
+	public static void write(Model statechart, IFile target) throws IOException, CoreException {
+		StatechartResources.save(statechart, Path.of(target.getLocationURI()));
+		target.refreshLocal(IResource.DEPTH_ZERO, null);
 	}
 }

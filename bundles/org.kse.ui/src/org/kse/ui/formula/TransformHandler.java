@@ -67,8 +67,7 @@ public class TransformHandler extends AbstractHandler {
 			return null;
 		}
 		try {
-			StatechartResources.save(outcome.model(), java.nio.file.Path.of(target.getLocationURI()));
-			target.refreshLocal(IResource.DEPTH_ZERO, null);
+			FormulaTransformer.write(outcome.model(), target);
 			IDE.openEditor(editor.getSite().getPage(), target, true);
 		} catch (IOException | CoreException e) {
 			MessageDialog.openError(shell, TITLE, "Cannot write " + target.getFullPath() + ": " + e.getMessage());
@@ -120,9 +119,9 @@ public class TransformHandler extends AbstractHandler {
 	/**
 	 * Where the statechart goes: the model file itself when it does not exist or holds nothing the
 	 * formulas cannot reproduce; otherwise what the user chooses after reading what would be lost
-	 * (null: cancelled).
+	 * (null: cancelled). Asked by Transform and by the New Statechart from Formulas wizard.
 	 */
-	private static IFile chooseTarget(Shell shell, IFile model, Model fresh) {
+	public static IFile chooseTarget(Shell shell, IFile model, Model fresh) {
 		if (!model.exists()) {
 			return model;
 		}

@@ -1,5 +1,6 @@
 package org.kse.ui.wizards;
 
+import java.io.IOException;
 import java.lang.reflect.InvocationTargetException;
 
 import org.eclipse.core.resources.IFile;
@@ -8,8 +9,6 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IAdaptable;
 import org.eclipse.core.runtime.IPath;
-import org.eclipse.core.runtime.IStatus;
-import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.jface.layout.GridDataFactory;
 import org.eclipse.jface.layout.GridLayoutFactory;
 import org.eclipse.jface.viewers.IStructuredSelection;
@@ -22,10 +21,11 @@ import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Text;
 import org.eclipse.ui.INewWizard;
 import org.eclipse.ui.IWorkbench;
-import org.eclipse.ui.actions.WorkspaceModifyOperation;
 import org.eclipse.ui.dialogs.ResourceListSelectionDialog;
 import org.eclipse.ui.wizards.newresource.BasicNewResourceWizard;
+import org.kse.transform.FormulaTransformation;
 import org.kse.ui.formula.FormulaTransformer;
+import org.kse.ui.formula.TransformHandler;
 
 /** The thesis' first step: a statechart from a formula file, written next to it. */
 public class NewStatechartFromFormulaWizard extends Wizard implements INewWizard {
@@ -53,16 +53,13 @@ public class NewStatechartFromFormulaWizard extends Wizard implements INewWizard
 	@Override
 	public boolean performFinish() {
 		IFile formula = page.formula();
-		IFile model = FormulaTransformer.modelOf(formula);
-		if (model.exists() && !MessageDialog.openQuestion(getShell(), getWindowTitle(), model.getName() + " exists already. Replace it?")) {
-			return false;
-		}
-		IStatus[] result = new IStatus[1];
+		FormulaTransformation.Outcome[] outcome = new FormulaTransformation.Outcome[1];
 		try {
-			getContainer().run(true, false, new WorkspaceModifyOperation(formula.getParent()) {
-				@Override
-				protected void execute(org.eclipse.core.runtime.IProgressMonitor monitor) throws CoreException {
-					result[0] = FormulaTransformer.transform(formula, FormulaTransformer.read(formula), model, monitor);
+			getContainer().run(true, false, monitor -> {
+				try {
+					outcome[0] = FormulaTransformer.outcome(formula, FormulaTransformer.read(formula), monitor);
+				} catch (CoreException e) {
+					throw new InvocationTargetException(e);
 				}
 			});
 		} catch (InvocationTargetException e) {
@@ -71,11 +68,22 @@ public class NewStatechartFromFormulaWizard extends Wizard implements INewWizard
 		} catch (InterruptedException e) {
 			return false;
 		}
-		if (!result[0].isOK()) {
-			page.setErrorMessage(result[0].getMessage());
+		if (outcome[0].model() == null) {
+			page.setErrorMessage(FormulaTransformer.problem(formula, outcome[0]));
 			return false;
 		}
-		BasicNewResourceWizard.selectAndReveal(model, workbench.getActiveWorkbenchWindow());
+		// a model with hand edits is never replaced without saying what would be lost (as Transform does)
+		IFile target = TransformHandler.chooseTarget(getShell(), FormulaTransformer.modelOf(formula), outcome[0].model());
+		if (target == null) {
+			return false;
+		}
+		try {
+			FormulaTransformer.write(outcome[0].model(), target);
+		} catch (IOException | CoreException e) {
+			page.setErrorMessage("Cannot write " + target.getFullPath() + ": " + e.getMessage());
+			return false;
+		}
+		BasicNewResourceWizard.selectAndReveal(target, workbench.getActiveWorkbenchWindow());
 		return true;
 	}
 

@@ -337,4 +337,36 @@ class CommandFeedbackTest {
 		closeSummaries();
 		write("Goalie.stct", example("Goalie.stct"));
 	}
+
+	@Test
+	@Order(7)
+	void newStatechartFromFormulasAsksAsTransformDoesAndKeepsTheCuratedGoalie() throws Exception {
+		byte[] curated = example("Goalie.stct");
+		IFile model = write("Goalie.stct", curated);
+		IFile formula = write("Goalie.liveness", example("Goalie.liveness"));
+		IFile beside = project.getFile("Goalie-from-formula.stct");
+		if (beside.exists()) {
+			beside.delete(true, null);
+		}
+		var wizard = new org.kse.ui.wizards.NewStatechartFromFormulaWizard();
+		wizard.init(PlatformUI.getWorkbench(), new org.eclipse.jface.viewers.StructuredSelection(formula));
+		var dialog = new org.eclipse.jface.wizard.WizardDialog(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell(), wizard);
+		dialog.setBlockOnOpen(false);
+		dialog.open();
+		Ui.expectDialog(TRANSFORM_TITLE);
+		String[] asked = new String[2];
+		Ui.Answered question = Ui.whenShown(shell -> TRANSFORM_TITLE.equals(shell.getText()), shown -> {
+			asked[0] = String.join("\n", Ui.find(shown, Label.class).stream().map(Label::getText).toList());
+			asked[1] = shown.getDefaultButton() == null ? null : shown.getDefaultButton().getText().replace("&", "");
+			Ui.screenshotOf(shown, "64-wizard-asks");
+			Ui.press(shown.getDefaultButton());
+		});
+		Ui.press(dialog.getShell(), "Finish");
+		question.check("replace-or-write-beside (New Statechart from Formulas)");
+		assertTrue(Ui.waitUntil(() -> dialog.getShell() == null || dialog.getShell().isDisposed(), 30_000), "the wizard closes");
+		assertEquals("Write Goalie-from-formula.stct", asked[1], "writing beside the model is what Enter does");
+		assertTrue(asked[0].contains("PLAYER_PLAYING"), () -> "the hand-written guards are listed: " + asked[0]);
+		assertArrayEquals(curated, Files.readAllBytes(Path.of(model.getLocationURI())), "the curated Goalie is kept as it is");
+		assertTrue(beside.exists(), "the statechart from the formulas is written beside it");
+	}
 }
