@@ -67,8 +67,12 @@ public final class StatechartGraph {
 	 * The rule book's answers the page needs before it asks the server (ADR 0018): which kinds
 	 * hold other states ({@code compositeKinds}, e.g. "or and"), and why a kind cannot go into
 	 * another ({@code holdRefusal:<parent>/<child>}), so a refused drop says what the server would.
+	 * The same for every graph: made once.
 	 */
-	private static void rules(GGraphBuilder graph) {
+	private static final Map<String, String> RULES = rules();
+
+	private static Map<String, String> rules() {
+		Map<String, String> rules = new java.util.LinkedHashMap<>();
 		StringBuilder composite = new StringBuilder();
 		for (NodeKind parent : NodeKind.values()) {
 			if (parent.isComposite()) {
@@ -77,11 +81,12 @@ public final class StatechartGraph {
 			for (NodeKind child : NodeKind.values()) {
 				String refusal = StatechartRules.holdRefusal(parent, child);
 				if (refusal != null) {
-					graph.addArgument("holdRefusal:" + kindName(parent) + "/" + kindName(child), refusal);
+					rules.put("holdRefusal:" + kindName(parent) + "/" + kindName(child), refusal);
 				}
 			}
 		}
-		graph.addArgument("compositeKinds", composite.toString());
+		rules.put("compositeKinds", composite.toString());
+		return java.util.Collections.unmodifiableMap(rules);
 	}
 
 	private static String kindName(NodeKind kind) {
@@ -91,7 +96,7 @@ public final class StatechartGraph {
 	/** The graph of the model with states where {@code bounds} says; {@code ids} receives the element of each id. */
 	public static GGraph of(Model model, Function<Node, Bounds> bounds, Map<String, EObject> ids) {
 		GGraphBuilder graph = new GGraphBuilder(GRAPH).id(ROOT);
-		rules(graph);
+		RULES.forEach(graph::addArgument);
 		ids.put(ROOT, model);
 		for (Node root : model.getNodes()) {
 			graph.add(state(root, bounds, ids));

@@ -10,8 +10,6 @@ import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.ILog;
-import org.eclipse.core.runtime.IProgressMonitor;
-import org.eclipse.emf.common.util.URI;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.widgets.Shell;
 import org.eclipse.ui.IEditorPart;
@@ -57,7 +55,6 @@ public class TransformHandler extends AbstractHandler {
 			MessageDialog.openError(shell, TITLE, "The formulas of " + formula.getName() + " could not be transformed: " + e.getCause().getMessage());
 			return null;
 		}
-		FormulaChecker.show(formula, outcome.issues(), text.length());
 		if (outcome.model() == null) {
 			reportErrors(editor, outcome.issues());
 			return null;
@@ -75,14 +72,16 @@ public class TransformHandler extends AbstractHandler {
 		return null;
 	}
 
-	/** Parses and transforms off the UI thread, with a busy cursor (and a progress dialog if it takes long); null when cancelled there. */
+	/**
+	 * Parses and transforms off the UI thread, with a busy cursor (and a progress dialog if it takes
+	 * long), the formula's problems shown as markers; null when cancelled there.
+	 */
 	private static FormulaTransformation.Outcome transformed(IFile formula, String text) throws InvocationTargetException {
 		FormulaTransformation.Outcome[] outcome = new FormulaTransformation.Outcome[1];
 		try {
 			PlatformUI.getWorkbench().getProgressService().busyCursorWhile(monitor -> {
-				monitor.beginTask("Transforming " + formula.getName(), IProgressMonitor.UNKNOWN);
 				try {
-					outcome[0] = FormulaTransformation.run(text, URI.createPlatformResourceURI(formula.getFullPath().toString(), true), null);
+					outcome[0] = FormulaTransformer.outcome(formula, text, monitor);
 					if (monitor.isCanceled()) {
 						throw new InterruptedException();
 					}
