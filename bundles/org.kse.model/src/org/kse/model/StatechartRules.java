@@ -40,7 +40,12 @@ public final class StatechartRules {
 		if (parent.isComposite()) {
 			return "an " + parent + " state holds only " + names(mayHold(parent)) + " regions, not " + child + " states";
 		}
-		return article(parent) + " " + parent + " state cannot hold other states";
+		return leafRefusal(parent);
+	}
+
+	/** Why a state of this kind cannot hold any state, or null when it may hold some. */
+	public static String leafRefusal(NodeKind kind) {
+		return mayHold(kind).isEmpty() ? article(kind) + " " + kind + " state cannot hold other states" : null;
 	}
 
 	/** Why a state of this type ({@code Node.type}) cannot be the root of a model, or null when it can (only an OR state can). */

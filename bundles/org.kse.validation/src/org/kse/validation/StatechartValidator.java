@@ -125,7 +125,7 @@ public class StatechartValidator implements EValidator {
 		}
 		if (!kind.isComposite()) {
 			if (!node.getChildren().isEmpty()) {
-				error(diagnostics, LEAF_CHILDREN, node, StatechartRules.holdRefusal(kind, NodeKind.BASIC));
+				error(diagnostics, LEAF_CHILDREN, node, StatechartRules.leafRefusal(kind));
 			}
 			return;
 		}

@@ -27,7 +27,7 @@ import org.eclipse.ui.IWorkbench;
 import org.eclipse.ui.actions.WorkspaceModifyOperation;
 import org.eclipse.ui.dialogs.WizardNewProjectCreationPage;
 import org.eclipse.ui.wizards.newresource.BasicNewResourceWizard;
-import org.kse.ui.model.ModelFiles;
+import org.kse.ui.ModelFiles;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.FrameworkUtil;
 

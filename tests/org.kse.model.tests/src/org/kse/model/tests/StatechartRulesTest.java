@@ -37,6 +37,9 @@ class StatechartRulesTest {
 		assertEquals("an END state cannot hold other states", StatechartRules.holdRefusal(NodeKind.END, NodeKind.OR));
 		assertEquals("an AND state holds only OR regions, not BASIC states", StatechartRules.holdRefusal(NodeKind.AND, NodeKind.BASIC));
 		assertNull(StatechartRules.holdRefusal(NodeKind.AND, NodeKind.OR));
+		assertEquals("a CONDITION state cannot hold other states", StatechartRules.leafRefusal(NodeKind.CONDITION));
+		assertNull(StatechartRules.leafRefusal(NodeKind.AND), "an AND state holds regions");
+		assertNull(StatechartRules.leafRefusal(NodeKind.OR));
 		for (NodeKind child : NodeKind.values()) {
 			assertNull(StatechartRules.holdRefusal(NodeKind.OR, child), child.name());
 			assertEquals(StatechartRules.mayHold(NodeKind.AND).contains(child), StatechartRules.holdRefusal(NodeKind.AND, child) == null, child.name());

@@ -39,8 +39,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.ui.formula.FormulaEditor;
-import org.kse.ui.model.ModelFiles;
-import org.kse.ui.model.editor.StatechartEditor;
+import org.kse.ui.ModelFiles;
+import org.kse.ui.statechart.editor.StatechartEditor;
 
 /**
  * Each command answers where the user looks: a broken formula is reported once, with its line and
@@ -348,7 +348,7 @@ class CommandFeedbackTest {
 		if (beside.exists()) {
 			beside.delete(true, null);
 		}
-		var wizard = new org.kse.ui.wizards.NewStatechartFromFormulaWizard();
+		var wizard = new org.kse.ui.formula.wizards.NewStatechartFromFormulaWizard();
 		wizard.init(PlatformUI.getWorkbench(), new org.eclipse.jface.viewers.StructuredSelection(formula));
 		var dialog = new org.eclipse.jface.wizard.WizardDialog(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell(), wizard);
 		dialog.setBlockOnOpen(false);

@@ -30,9 +30,9 @@ import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
-import org.kse.ui.model.diagram.DiagramPage;
-import org.kse.ui.model.diagram.WorkspaceDiagramServer;
-import org.kse.ui.model.editor.StatechartEditor;
+import org.kse.ui.statechart.diagram.DiagramPage;
+import org.kse.ui.statechart.diagram.WorkspaceDiagramServer;
+import org.kse.ui.statechart.editor.StatechartEditor;
 
 /**
  * The statechart editor's Diagram tab inside the KSE workbench: the diagram page in an SWT Browser,
@@ -388,7 +388,7 @@ class DiagramEditorTest {
 	private int errorsNaming(String name) {
 		try {
 			int count = 0;
-			for (var marker : file.findMarkers(org.kse.ui.model.ModelMarkers.MARKER, false, IResource.DEPTH_ZERO)) {
+			for (var marker : file.findMarkers(org.kse.ui.statechart.ModelMarkers.MARKER, false, IResource.DEPTH_ZERO)) {
 				if (marker.getAttribute(org.eclipse.core.resources.IMarker.SEVERITY, -1) == org.eclipse.core.resources.IMarker.SEVERITY_ERROR
 						&& marker.getAttribute(org.eclipse.core.resources.IMarker.MESSAGE, "").contains(name)) {
 					count++;

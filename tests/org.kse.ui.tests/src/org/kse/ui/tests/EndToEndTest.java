@@ -37,10 +37,10 @@ import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Transition;
 import org.kse.ui.formula.FormulaEditor;
-import org.kse.ui.model.ModelMarkers;
-import org.kse.ui.model.editor.StatechartEditor;
-import org.kse.ui.model.editor.properties.TransitionSection;
-import org.kse.ui.wizards.NewFormulaWizard;
+import org.kse.ui.statechart.ModelMarkers;
+import org.kse.ui.statechart.editor.StatechartEditor;
+import org.kse.ui.statechart.editor.properties.TransitionSection;
+import org.kse.ui.formula.wizards.NewFormulaWizard;
 import org.kse.ui.wizards.NewProjectWizard;
 
 /**

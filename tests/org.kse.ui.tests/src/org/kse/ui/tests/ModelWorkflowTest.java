@@ -27,8 +27,8 @@ import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.extension.ExtendWith;
-import org.kse.ui.model.ModelFiles;
-import org.kse.ui.model.ModelMarkers;
+import org.kse.ui.ModelFiles;
+import org.kse.ui.statechart.ModelMarkers;
 import org.kse.ui.wizards.NewProjectWizard;
 
 /**
@@ -119,7 +119,7 @@ class ModelWorkflowTest {
 			Ui.screenshot("12-validation-problem");
 			// opening the problem (a double-click in the Problems view) selects the transition in the statechart editor
 			var opened = org.eclipse.ui.ide.IDE.openEditor(Ui.page(), marker);
-			var selected = ((org.eclipse.jface.viewers.IStructuredSelection) ((org.kse.ui.model.editor.StatechartEditor) opened).getViewer()
+			var selected = ((org.eclipse.jface.viewers.IStructuredSelection) ((org.kse.ui.statechart.editor.StatechartEditor) opened).getViewer()
 					.getSelection()).getFirstElement();
 			assertTrue(selected instanceof org.kse.model.statechart.Transition transition
 					&& marker.getAttribute(IMarker.MESSAGE, "").contains(transition.getName()), () -> "selected: " + selected);
@@ -243,7 +243,7 @@ class ModelWorkflowTest {
 	void theTreeEditorEditsAPropertyWithUndoRedoAndSave() throws Exception {
 		IFile defender = project.getFile("models/Defender.stct");
 		var part = org.eclipse.ui.ide.IDE.openEditor(Ui.page(), defender);
-		var editor = (org.kse.ui.model.editor.StatechartEditor) part;
+		var editor = (org.kse.ui.statechart.editor.StatechartEditor) part;
 		var tree = editor.getViewer().getTree();
 		var model = tree.getItem(0);
 		assertTrue(model.getText().startsWith("Model Defender"), model.getText());
@@ -289,11 +289,11 @@ class ModelWorkflowTest {
 	@Order(9)
 	void aGuardIsEditedWithCompletionFromTheMessageCatalogAndCheckedWhileTyped() throws Exception {
 		IFile goalie = project.getFile("models/Goalie.stct");
-		var editor = (org.kse.ui.model.editor.StatechartEditor) org.eclipse.ui.ide.IDE.openEditor(Ui.page(), goalie);
+		var editor = (org.kse.ui.statechart.editor.StatechartEditor) org.eclipse.ui.ide.IDE.openEditor(Ui.page(), goalie);
 		org.kse.model.statechart.Transition transition = editor.getModel().getTransitions().stream()
 				.filter(t -> "0.2.2.2_TO_playing".equals(t.getName())).findFirst().orElseThrow();
 		editor.getViewer().setSelection(new StructuredSelection(transition), true);
-		var dialog = new org.kse.ui.model.editor.ExpressionDialog(editor.getSite().getShell(), transition.getName(), transition.getTE(),
+		var dialog = new org.kse.ui.statechart.editor.ExpressionDialog(editor.getSite().getShell(), transition.getName(), transition.getTE(),
 				editor.catalog());
 		dialog.setBlockOnOpen(false);
 		dialog.open();
@@ -303,16 +303,16 @@ class ModelWorkflowTest {
 			document.set("[worldstate.State.GameStateMessage.player_s");
 			viewer.getTextWidget().setFocus();
 			viewer.setSelectedRange(document.getLength(), 0);
-			var offered = new org.kse.ui.model.editor.ExpressionAssist(editor.catalog()).computeCompletionProposals(viewer, document.getLength());
+			var offered = new org.kse.ui.statechart.editor.ExpressionAssist(editor.catalog()).computeCompletionProposals(viewer, document.getLength());
 			assertEquals(1, offered.length, "one field of GameStateMessage starts with 'player_s'");
 			offered[0].apply(document);
 			assertEquals("[worldstate.State.GameStateMessage.player_state()", document.get(), "the field is completed");
 			assertTrue(dialog.getErrorMessage() != null, "unfinished, it is an error");
 			Ui.screenshotOf(dialog.getShell(), "18-guard-completed");
 
-			var proposals = new org.kse.ui.model.editor.ExpressionAssist(editor.catalog()).proposals("[worldstate.State.");
+			var proposals = new org.kse.ui.statechart.editor.ExpressionAssist(editor.catalog()).proposals("[worldstate.State.");
 			assertTrue(proposals.stream().anyMatch(p -> p[0].equals("GameStateMessage")), "message types after topic.Kind.");
-			assertTrue(new org.kse.ui.model.editor.ExpressionAssist(editor.catalog()).proposals("[behavior.").stream()
+			assertTrue(new org.kse.ui.statechart.editor.ExpressionAssist(editor.catalog()).proposals("[behavior.").stream()
 					.anyMatch(p -> p[0].equals("State")), "kinds after a topic");
 
 			document.set("[worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING && behavior.State.HeadToBMessage.ballfound()>0]");

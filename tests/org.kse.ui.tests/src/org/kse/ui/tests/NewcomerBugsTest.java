@@ -44,8 +44,8 @@ import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.statechart.Node;
 import org.kse.transform.FormulaTransformation;
 import org.kse.ui.formula.FormulaEditor;
-import org.kse.ui.model.editor.StatechartEditor;
-import org.kse.ui.wizards.NewFormulaWizard;
+import org.kse.ui.statechart.editor.StatechartEditor;
+import org.kse.ui.formula.wizards.NewFormulaWizard;
 import org.kse.ui.wizards.NewProjectWizard;
 
 /**

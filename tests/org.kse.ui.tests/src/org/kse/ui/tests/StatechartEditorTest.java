@@ -39,11 +39,11 @@ import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 import org.kse.model.statechart.Variable;
-import org.kse.ui.model.editor.StatechartEditor;
+import org.kse.ui.statechart.editor.StatechartEditor;
 import org.kse.model.edit.StatechartEdits;
-import org.kse.ui.model.editor.properties.ModelSection;
-import org.kse.ui.model.editor.properties.StateSection;
-import org.kse.ui.model.editor.properties.TransitionSection;
+import org.kse.ui.statechart.editor.properties.ModelSection;
+import org.kse.ui.statechart.editor.properties.StateSection;
+import org.kse.ui.statechart.editor.properties.TransitionSection;
 
 /**
  * The statechart editor as a user works in it: the tabbed Properties view (State, Transition,
@@ -351,8 +351,8 @@ class StatechartEditorTest {
 
 	/** The problem line of an expression field, as the section shows it. */
 	private static final class ExpressionFieldSummary {
-		static String of(org.kse.ui.model.editor.ExpressionField field) {
-			return org.kse.ui.model.editor.ExpressionField.summary(field.problems());
+		static String of(org.kse.ui.statechart.editor.ExpressionField field) {
+			return org.kse.ui.statechart.editor.ExpressionField.summary(field.problems());
 		}
 	}
 }
