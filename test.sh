@@ -33,7 +33,9 @@ else
   ./mvnw -B clean verify
 fi
 mkdir -p "$out"
-echo "   screenshots of the UI tests: $(ls tests/org.kse.ui.tests/target/screenshots | tr '\n' ' ')"
+for bundle in tests/org.kse.ui.tests tests/org.kse.ui.formula.tests tests/org.kse.ui.statechart.tests; do
+  echo "   screenshots of ${bundle#tests/}: $(ls "$bundle/target/screenshots" 2>/dev/null | tr '\n' ' ')"
+done
 
 echo "== The workbench product: Linux archive started under Xvfb, Windows archive listed"
 tests/product/smoke.sh "$out/product"

@@ -14,11 +14,9 @@ rm -rf "$out" && mkdir -p "$out/kse" "$out/platform"
 tar xzf "$(ls "$products"/kse-workbench-*-linux.gtk.x86_64.tar.gz)" -C "$out/kse"
 tar xzf "$(ls "$products"/eclipse-platform-*-linux.gtk.x86_64.tar.gz)" -C "$out/platform"
 
-display=":$(( 300 + RANDOM % 100 ))"
-Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp > "$out/xvfb.log" 2>&1 &
-xvfb=$!
-trap 'kill $xvfb 2>/dev/null || true; [ -n "${pid:-}" ] && kill $pid 2>/dev/null || true' EXIT
-sleep 1
+source "$here/tests/product/virtual-display.sh"
+trap 'kill ${xvfb:-} 2>/dev/null || true; [ -n "${pid:-}" ] && kill $pid 2>/dev/null || true' EXIT
+start_virtual_display "$out/xvfb.log"
 
 # $1: which product; sets $splash and $window (ms from the start command, splash -1 when none)
 start() {

@@ -48,11 +48,9 @@ grep -q '^org.kse.ui,' "$ide/configuration/org.eclipse.equinox.simpleconfigurato
 echo "-- the IDE started under Xvfb with a statechart on its command line"
 mkdir -p "$out/models"
 cp "$here/examples/Goalie/Goalie.stct" "$out/models/"
-display=":$(( 200 + RANDOM % 100 ))"
-Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp > "$out/xvfb.log" 2>&1 &
-xvfb=$!
-trap 'kill $xvfb 2>/dev/null || true; [ -n "${eclipse:-}" ] && kill $eclipse 2>/dev/null || true' EXIT
-sleep 1
+source "$here/tests/product/virtual-display.sh"
+trap 'kill ${xvfb:-} 2>/dev/null || true; [ -n "${eclipse:-}" ] && kill $eclipse 2>/dev/null || true' EXIT
+start_virtual_display "$out/xvfb.log"
 (cd "$out/models" && DISPLAY="$display" exec "$java" -Xss16m -XX:ErrorFile="$out/hs_err_%p.log" -jar "$launcher" -data "$out/workspace" -consoleLog Goalie.stct) > "$out/eclipse.log" 2>&1 &
 eclipse=$!
 title=""

@@ -33,11 +33,9 @@ for part in org.kse.doc_ org.eclipse.help.ui_ org.eclipse.help.webapp_ org.eclip
   ls "$out/kse-workbench/plugins/$part"* > /dev/null 2>&1 || fail "the Linux archive has no $part (the user manual in Eclipse help)"
 done
 
-display=":$(( 90 + RANDOM % 100 ))"
-Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp > "$out/xvfb.log" 2>&1 &
-xvfb=$!
-trap 'kill $xvfb 2>/dev/null || true; [ -n "${workbench:-}" ] && kill $workbench 2>/dev/null || true' EXIT
-sleep 1
+source "$here/tests/product/virtual-display.sh"
+trap 'kill ${xvfb:-} 2>/dev/null || true; [ -n "${workbench:-}" ] && kill $workbench 2>/dev/null || true' EXIT
+start_virtual_display "$out/xvfb.log"
 
 # starts the workbench ($workbench: its pid) and waits for its window titled with the product
 # name ($elapsed: milliseconds since the start script ran; $splash: whether KSE's splash, a

@@ -79,7 +79,7 @@ public final class MessageCatalog {
 						: String.valueOf(file.getFileName());
 				try {
 					String text = new String(Files.readAllBytes(file), StandardCharsets.UTF_8);
-					units.add(new TypeResolver.Unit(ProtoParser.parse(file, text), importName));
+					units.add(new TypeResolver.Unit(ProtoReader.read(file, text), importName));
 				} catch (IOException | RuntimeException e) {
 					loadProblems.add(new ProtoProblem(file, 1, 1, "cannot read file: " + e));
 				}

@@ -85,7 +85,7 @@ public final class StandardMessages {
 				if (in == null) {
 					throw new IllegalStateException("the KSE bundle lacks its standard message file " + name);
 				}
-				parsed.add(ProtoParser.parse(Path.of(FOLDER + name), new String(in.readAllBytes(), StandardCharsets.UTF_8)));
+				parsed.add(ProtoReader.read(Path.of(FOLDER + name), new String(in.readAllBytes(), StandardCharsets.UTF_8)));
 			} catch (IOException e) {
 				throw new UncheckedIOException(e);
 			}
@@ -138,7 +138,7 @@ public final class StandardMessages {
 					if (leftOut.contains(file.toAbsolutePath().normalize())) {
 						continue;
 					}
-					ProtoFile parsed = ProtoParser.parse(folder.relativize(file), readText(file));
+					ProtoFile parsed = ProtoReader.read(folder.relativize(file), readText(file));
 					userFiles.putIfAbsent(folder.relativize(file), file);
 					user.add(parsed);
 					parsed.messages().forEach(type -> defined.putIfAbsent(type.fullName(), file));

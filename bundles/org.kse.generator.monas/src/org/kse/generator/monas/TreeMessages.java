@@ -14,7 +14,7 @@ import java.util.TreeSet;
 import java.util.stream.Stream;
 
 import org.kse.messages.ProtoFile;
-import org.kse.messages.ProtoParser;
+import org.kse.messages.ProtoReader;
 import org.kse.messages.StandardMessages;
 
 /**
@@ -60,7 +60,7 @@ public record TreeMessages(List<String> compiled, Map<String, List<String>> repl
 					compiled.add(name);
 					continue;
 				}
-				ProtoFile parsed = ProtoParser.parse(file, Files.readString(file, StandardCharsets.UTF_8));
+				ProtoFile parsed = ProtoReader.read(file, Files.readString(file, StandardCharsets.UTF_8));
 				List<String> others = Stream.concat(parsed.messages().stream().map(type -> type.fullName()), parsed.enums().stream().map(type -> type.fullName()))
 						.filter(type -> !again.contains(type)).toList();
 				if (!others.isEmpty()) {

@@ -20,7 +20,7 @@ import org.kse.messages.Field;
 import org.kse.messages.FieldType;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.MessageType;
-import org.kse.messages.ProtoParser;
+import org.kse.messages.ProtoReader;
 import org.kse.messages.ProtoProblem;
 import org.kse.messages.ScalarKind;
 
@@ -266,8 +266,8 @@ class MessageCatalogTest {
 
 	@Test
 	void catalogOfParsedBuffers() {
-		MessageCatalog catalog = MessageCatalog.of(List.of(ProtoParser.parse(Path.of("common.proto"), Protos.COMMON),
-				ProtoParser.parse(Path.of("WorldInfo.proto"), Protos.WORLD_INFO)));
+		MessageCatalog catalog = MessageCatalog.of(List.of(ProtoReader.read(Path.of("common.proto"), Protos.COMMON),
+				ProtoReader.read(Path.of("WorldInfo.proto"), Protos.WORLD_INFO)));
 		assertNoProblems(catalog.problems());
 		assertTrue(catalog.message("WorldInfo").orElseThrow().field("header").orElseThrow().messageType().isPresent());
 	}

@@ -41,7 +41,7 @@ import org.kse.messages.MessageCatalog;
 import org.kse.messages.MessageType;
 import org.kse.messages.ProtoFile;
 import org.kse.messages.ProtoImport;
-import org.kse.messages.ProtoParser;
+import org.kse.messages.ProtoReader;
 import org.kse.messages.ProtoProblem;
 
 /**
@@ -283,7 +283,7 @@ class ProtocAgreementTest {
 			if (!current.equals(file)) {
 				result.add(current);
 			}
-			for (ProtoImport imp : ProtoParser.parse(current, Files.readString(current)).imports()) {
+			for (ProtoImport imp : ProtoReader.read(current, Files.readString(current)).imports()) {
 				Path beside = file.getParent().resolve(imp.path());
 				todo.push(Files.isRegularFile(beside) ? beside : importRoot.resolve(imp.path()));
 			}
@@ -294,9 +294,9 @@ class ProtocAgreementTest {
 	/** KSE's view of {@code text} standing for the real file, its imports parsed afresh (linking changes them). */
 	private static MessageCatalog kseCatalog(RealFile real, String text) throws IOException {
 		List<ProtoFile> files = new ArrayList<>();
-		files.add(ProtoParser.parse(real.file(), text));
+		files.add(ProtoReader.read(real.file(), text));
 		for (Path imported : real.imports()) {
-			files.add(ProtoParser.parse(imported, Files.readString(imported)));
+			files.add(ProtoReader.read(imported, Files.readString(imported)));
 		}
 		return MessageCatalog.of(files);
 	}
@@ -413,12 +413,13 @@ class ProtocAgreementTest {
 		private static final List<String> EDGE_NUMBERS = List.of("-1", "18999", "19000", "19999", "20000", "536870911",
 				"536870912", "2147483648", "0x10", "010", "09", "1.0");
 		/**
-		 * Tokens to insert. Not {@code reserved} nor {@code extensions}: KSE skips those statements up to
-		 * their ';' on purpose (see ProtoParser: reserved ranges and extensions carry no data), so a
-		 * malformed one ({@code reserved optional int32 x = 1;}) is not refused, where protoc is.
+		 * Tokens to insert. {@code reserved} and {@code extensions} too: the grammar parses those
+		 * statements as protoc does (the hand-written reader skipped them up to their ';', so a
+		 * malformed one such as {@code reserved optional int32 x = 1;} was not refused).
 		 */
 		private static final List<String> INSERTED = List.of(";", "{", "}", "=", "1", "x", "message", "enum", "optional",
-				"int32", ".", ",", "<", ">", "\"s\"", "oneof", "map", "import", "package", "syntax", "-", "group");
+				"int32", ".", ",", "<", ">", "\"s\"", "oneof", "map", "import", "package", "syntax", "-", "group", "reserved",
+				"extensions");
 
 		private final List<Tok> tokens = new ArrayList<>();
 
@@ -533,9 +534,9 @@ class ProtocAgreementTest {
 		}
 
 		/**
-		 * Option values are not mutated: KSE recognises options ({@code [default = 0]},
-		 * {@code option x = y;}) and skips them on purpose (see ProtoParser), it neither knows the
-		 * option names nor checks a default against its field's type, where protoc does both. A
+		 * Option values are not mutated: KSE parses options ({@code [default = 0]},
+		 * {@code option x = y;}) but leaves them unused on purpose (see ProtoReader), it neither knows
+		 * the option names nor checks a default against its field's type, where protoc does both. A
 		 * mutant there would only measure that documented leniency.
 		 */
 		private static boolean pickable(Tok t) {

@@ -12,7 +12,7 @@ import java.util.List;
 import java.util.stream.Collectors;
 
 import org.kse.messages.ProtoFile;
-import org.kse.messages.ProtoParser;
+import org.kse.messages.ProtoReader;
 import org.kse.messages.ProtoProblem;
 
 /** Realistic Monas-style sample files and small helpers shared by the tests. */
@@ -122,7 +122,7 @@ final class Protos {
 			""";
 
 	static ProtoFile parse(String text) {
-		return ProtoParser.parse(Path.of("test.proto"), text);
+		return ProtoReader.read(Path.of("test.proto"), text);
 	}
 
 	/** "line:column" (1-based) of the first occurrence of {@code needle} in {@code text}. */

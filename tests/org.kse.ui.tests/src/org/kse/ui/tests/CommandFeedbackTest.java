@@ -41,6 +41,8 @@ import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.ui.formula.FormulaEditor;
 import org.kse.ui.ModelFiles;
 import org.kse.ui.statechart.editor.StatechartEditor;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * Each command answers where the user looks: a broken formula is reported once, with its line and

@@ -42,6 +42,8 @@ import org.kse.ui.statechart.editor.StatechartEditor;
 import org.kse.ui.statechart.editor.properties.TransitionSection;
 import org.kse.ui.formula.wizards.NewFormulaWizard;
 import org.kse.ui.wizards.NewProjectWizard;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * The whole path of the manual's tutorial on one project, as a user takes it: a new KSE project,

@@ -15,6 +15,7 @@ import org.eclipse.swt.widgets.Shell;
 import org.eclipse.ui.PlatformUI;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * The KSE menu as a user opens it: three bundles fill it (the workbench's groups, the formula

@@ -47,6 +47,8 @@ import org.kse.ui.formula.FormulaEditor;
 import org.kse.ui.statechart.editor.StatechartEditor;
 import org.kse.ui.formula.wizards.NewFormulaWizard;
 import org.kse.ui.wizards.NewProjectWizard;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * What a newcomer tripped over in the tutorial (issue 15): closing an editor while the Properties

@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.ui.statechart.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -30,6 +30,8 @@ import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.ui.ModelFiles;
 import org.kse.ui.statechart.ModelMarkers;
 import org.kse.ui.wizards.NewProjectWizard;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * A team's project: created with the New KSE Project wizard and its examples, a model validated
@@ -213,7 +215,7 @@ class ModelWorkflowTest {
 		Ui.select(goalie);
 		Ui.run("org.kse.ui.openFormula");
 		assertEquals("Goalie.liveness", Ui.page().getActiveEditor().getEditorInput().getName());
-		assertTrue(Ui.page().getActiveEditor() instanceof org.kse.ui.formula.FormulaEditor);
+		assertEquals("org.kse.ui.formula.editor", Ui.page().getActiveEditor().getSite().getId(), "the formula opens in the formula editor");
 		Ui.page().closeAllEditors(false);
 	}
 

@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.ui.statechart.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -44,6 +44,8 @@ import org.kse.model.edit.StatechartEdits;
 import org.kse.ui.statechart.editor.properties.ModelSection;
 import org.kse.ui.statechart.editor.properties.StateSection;
 import org.kse.ui.statechart.editor.properties.TransitionSection;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * The statechart editor as a user works in it: the tabbed Properties view (State, Transition,

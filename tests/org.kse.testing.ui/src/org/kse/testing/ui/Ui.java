@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.testing.ui;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -26,17 +26,17 @@ import org.eclipse.ui.handlers.IHandlerService;
 import org.eclipse.ui.navigator.CommonNavigator;
 
 /** What the UI tests share: finding and pressing controls, selecting and running commands, waiting while the workbench runs, and screenshots a person can look at. */
-final class Ui {
+public final class Ui {
 
 	private Ui() {
 	}
 
-	static IWorkbenchPage page() {
+	public static IWorkbenchPage page() {
 		return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
 	}
 
 	/** The controls of a type in a window or composite, the root included, depth first. */
-	static <T extends Control> List<T> find(Control root, Class<T> type) {
+	public static <T extends Control> List<T> find(Control root, Class<T> type) {
 		List<T> found = new ArrayList<>();
 		if (type.isInstance(root)) {
 			found.add(type.cast(root));
@@ -49,22 +49,22 @@ final class Ui {
 		return found;
 	}
 
-	static Button button(Shell shell, String label) {
+	public static Button button(Shell shell, String label) {
 		return find(shell, Button.class).stream().filter(button -> button.getText().replace("&", "").equals(label))
 				.findFirst().orElseThrow(() -> new AssertionError("no button " + label + " in " + shell.getText()));
 	}
 
 	/** A click on a button. */
-	static void press(Button button) {
+	public static void press(Button button) {
 		button.notifyListeners(SWT.Selection, null);
 	}
 
-	static void press(Shell shell, String label) {
+	public static void press(Shell shell, String label) {
 		press(button(shell, label));
 	}
 
 	/** Selects a resource in the Project Explorer, so that commands work on it as a user's click would. */
-	static void select(IResource resource) throws Exception {
+	public static void select(IResource resource) throws Exception {
 		var explorer = (CommonNavigator) page().showView(IPageLayout.ID_PROJECT_EXPLORER);
 		explorer.selectReveal(new StructuredSelection(resource));
 		page().activate(explorer);
@@ -75,7 +75,7 @@ final class Ui {
 	 * The example model {@code examples/<example>/<example>.stct}, fresh, as a file of the project
 	 * {@code project} (created and opened when needed) at {@code folder}'s location (null: in the workspace).
 	 */
-	static org.eclipse.core.resources.IFile exampleModel(String project, Path folder, String example) throws Exception {
+	public static org.eclipse.core.resources.IFile exampleModel(String project, Path folder, String example) throws Exception {
 		var workspace = org.eclipse.core.resources.ResourcesPlugin.getWorkspace();
 		var holder = workspace.getRoot().getProject(project);
 		if (!holder.exists()) {
@@ -96,11 +96,11 @@ final class Ui {
 		return file;
 	}
 
-	static void run(String command) throws Exception {
+	public static void run(String command) throws Exception {
 		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(command, null);
 	}
 
-	static Display display() {
+	public static Display display() {
 		return PlatformUI.getWorkbench().getDisplay();
 	}
 
@@ -108,7 +108,7 @@ final class Ui {
 	 * Runs the event loop until the condition holds; false after {@code millis}. A dialog that no
 	 * test expected, seen meanwhile, fails the test at once ({@link UnexpectedDialogs}).
 	 */
-	static boolean waitUntil(BooleanSupplier condition, long millis) {
+	public static boolean waitUntil(BooleanSupplier condition, long millis) {
 		long end = System.currentTimeMillis() + millis;
 		Display display = display();
 		UnexpectedDialogs.install(display);
@@ -131,17 +131,17 @@ final class Ui {
 	}
 
 	/** The test is about to show a window with this title on purpose (until it ends): it is not an unexpected dialog. */
-	static void expectDialog(String title) {
+	public static void expectDialog(String title) {
 		UnexpectedDialogs.expect(title);
 	}
 
 	/** What {@link #whenShown} did: whether it answered a dialog, and how that failed if it did. */
-	static final class Answered {
-		volatile boolean done;
-		volatile Throwable failure;
+	public static final class Answered {
+		public volatile boolean done;
+		public volatile Throwable failure;
 
 		/** Throws what went wrong while answering the dialog, or that none was shown. */
-		void check(String what) {
+		public void check(String what) {
 			if (failure != null) {
 				throw new AssertionError("answering the " + what + " dialog failed", failure);
 			}
@@ -156,7 +156,7 @@ final class Ui {
 	 * 100 ms for 20 s: a dialog opened by a command may show late on a loaded machine. A failing
 	 * answer closes the dialogs, so the command returns and the test can report it.
 	 */
-	static Answered whenShown(java.util.function.Predicate<Shell> which, java.util.function.Consumer<Shell> answer) {
+	public static Answered whenShown(java.util.function.Predicate<Shell> which, java.util.function.Consumer<Shell> answer) {
 		Answered answered = new Answered();
 		long deadline = System.currentTimeMillis() + 20_000;
 		Runnable[] look = new Runnable[1];
@@ -186,22 +186,22 @@ final class Ui {
 	}
 
 	/** Whether a window offers a button with this label (mnemonics ignored). */
-	static boolean offers(Shell shell, String label) {
+	public static boolean offers(Shell shell, String label) {
 		return find(shell, Button.class).stream().anyMatch(button -> label.equals(button.getText().replace("&", "")));
 	}
 
 	/** Lets the workbench paint what changed. */
-	static void settle(long millis) {
+	public static void settle(long millis) {
 		waitUntil(() -> false, millis);
 	}
 
 	/** The workbench window as a PNG under target/screenshots (system property kse.screenshots). */
-	static Path screenshot(String name) {
+	public static Path screenshot(String name) {
 		return screenshotOf(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell(), name);
 	}
 
 	/** A window (a dialog, the workbench) as a PNG under target/screenshots. */
-	static Path screenshotOf(Shell shell, String name) {
+	public static Path screenshotOf(Shell shell, String name) {
 		// a window just opened is mapped and painted only after the event loop has run a while
 		shell.moveAbove(null);
 		shell.update();

@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.testing.ui;
 
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -28,10 +28,10 @@ import org.junit.jupiter.api.extension.ExtensionContext;
  * {@link #BLOCKED_LIMIT} ms (nobody answers it), is screenshot, closed and reported; the test fails
  * with its text at its next wait or when it ends (this extension).
  */
-final class UnexpectedDialogs implements BeforeEachCallback, AfterEachCallback {
+public final class UnexpectedDialogs implements BeforeEachCallback, AfterEachCallback {
 
 	/** Tests answer their dialogs from a timer within a second or two; a dialog waiting this long is nobody's. */
-	static final long BLOCKED_LIMIT = 15_000;
+	public static final long BLOCKED_LIMIT = 15_000;
 	private static final int INTERVAL = 250;
 
 	private static final Set<String> expected = new HashSet<>();
@@ -48,7 +48,7 @@ final class UnexpectedDialogs implements BeforeEachCallback, AfterEachCallback {
 	static long lastWaitTurn = System.currentTimeMillis();
 
 	/** Watches the display's windows from now on (once). */
-	static void install(Display display) {
+	public static void install(Display display) {
 		if (installed) {
 			return;
 		}
@@ -68,12 +68,12 @@ final class UnexpectedDialogs implements BeforeEachCallback, AfterEachCallback {
 	}
 
 	/** A window with this title is the test's own until the test ends. */
-	static void expect(String title) {
+	public static void expect(String title) {
 		expected.add(title);
 	}
 
 	/** Fails the test with the windows found since the last call. */
-	static void failIfAny() {
+	public static void failIfAny() {
 		if (!found.isEmpty() && !reporting) {
 			String message = String.join("\n", found);
 			found.clear();

@@ -25,8 +25,8 @@ import org.kse.messages.ProtoImport;
 import org.kse.messages.ProtoProblem;
 import org.kse.messages.ScalarKind;
 
-/** The parser on its own: every construct of the supported subset, and syntax errors. */
-class ProtoParserTest {
+/** The reader on its own (grammar and checks): every construct of the supported subset, and syntax errors. */
+class ProtoReaderTest {
 
 	private static List<String> fieldNames(MessageType m) {
 		return m.fields().stream().map(Field::name).toList();
@@ -382,5 +382,107 @@ class ProtoParserTest {
 		ProtoFile nothing = parse(null);
 		assertTrue(nothing.messages().isEmpty() && nothing.problems().isEmpty());
 		assertFalse(parse("message").problems().isEmpty());
+	}
+
+	// ---- what the grammar adds over the hand-written reader
+
+	@Test
+	void keywordsAreNamesWhereProtocTakesThemAsNames() {
+		String text = """
+				syntax = "proto3";
+				package message.option;
+				message syntax {
+				  int32 message = 1;
+				  string option = 2;
+				  bool syntax = 3;
+				  repeated int32 map = 4;
+				  optional int32 to = 5;
+				  enum enum { reserved = 0; option = 1; max = 2; }
+				  map<string, int32> stream = 7;
+				}
+				""";
+		ProtoFile file = parse(text);
+		assertNoProblems(file.problems());
+		MessageType message = file.messages().get(0);
+		assertEquals("message.option.syntax", message.fullName());
+		assertEquals(List.of("message", "option", "syntax", "map", "to", "stream"), fieldNames(message));
+		assertEquals(Map.of("reserved", 0, "option", 1, "max", 2), message.nestedEnums().get(0).values());
+	}
+
+	@Test
+	void optionValuesOfEveryKindAreReadAndSkipped() {
+		String text = """
+				syntax = "proto2";
+				import "google/protobuf/descriptor.proto";
+				option (my.file) = { name: "x" size: -1.5e3 inner { flag: true } list: [1, 2, 3] [ext.field]: 7;
+				                      any: < type_url: "t" > msgs [ { a: 1 }, { a: 2 } ] , nan_value: -inf };
+				option java_package = "a" 'b';
+				message M {
+				  option (m).deep.(x.y) = 0x1F;
+				  optional int32 a = 1 [default = -0x10, (v) = { a: 1 }, packed = false, json_name = "A"];
+				  optional double d = 2 [default = .5];
+				  optional string s = 3 [default = 's"x'];
+				  extensions 100 to 199, 500 to max [(declaration) = { number: 100 }];
+				  reserved 10, 12 to 14;
+				  reserved "gone", "old";
+				}
+				extend M { optional int32 e = 100; }
+				service S {
+				  option (svc) = true;
+				  rpc Get (M) returns (stream .M) { option deadline = 1.5; }
+				  rpc Put (stream M) returns (M);
+				  ;
+				}
+				""";
+		ProtoFile file = parse(text);
+		assertNoProblems(file.problems());
+		assertEquals(List.of("a", "d", "s"), fieldNames(file.messages().get(0)));
+	}
+
+	@Test
+	void aStrayTokenCostsOneProblemAndNothingAfterIt() {
+		String text = """
+				syntax = "proto2";
+				42 "x" = ;
+				message A {
+				  optional int32 a = 1;
+				  ) ] = 7 ;
+				  optional int32 b = 2;
+				}
+				enum E { Z = 0; , . Y = 1; }
+				message B { optional A a = 1; }
+				""";
+		ProtoFile file = parse(text);
+		assertEquals(List.of("2:1: expected 'message', 'enum', 'import', 'package', 'option' or 'service', found '42'",
+				"5:3: expected a field, 'message', 'enum' or 'oneof' in message A, found ')'",
+				"8:17: expected an enum value in enum E, found ','"),
+				file.problems().stream().map(p -> at(p) + ": " + p.message()).toList());
+		assertEquals(List.of("A", "B"), file.messages().stream().map(MessageType::name).toList());
+		assertEquals(List.of("a", "b"), fieldNames(file.messages().get(0)));
+		assertEquals(Map.of("Z", 0, "Y", 1), file.enums().get(0).values());
+	}
+
+	@ParameterizedTest
+	@CsvSource(delimiter = '|', value = {
+			"message A { optional int32 = 1; }              | 1:28 | expected a field name, found '='",
+			"message A { optional int32 x 1; }              | 1:30 | expected '=' after field name x, found '1'",
+			"message A { optional int32 x = 1 }             | 1:33 | expected ';' after field x, found '}'",
+			"message A { optional int32 x = 1; ; optional } | 1:46 | expected a field type after 'optional', found '}'",
+			"message A { map<int32 string> m = 1; }         | 1:23 | expected ',' after the map key type, found 'string'",
+			"enum E { A 0; }                                | 1:12 | expected '=' after enum value A, found '0'",
+			"syntax 'proto2';                               | 1:8  | expected '=' after 'syntax', found string \"proto2\"",
+			"syntax = proto2;                               | 1:10 | expected \"proto2\" or \"proto3\", found 'proto2'",
+			"package ;                                      | 1:9  | expected a package name, found ';'",
+			"import foo;                                    | 1:8  | expected the imported file name as a string, found 'foo'",
+			"message A { optional B. = 1; }                 | 1:25 | expected a name after '.', found '='",
+			"enum { A = 0; }                                | 1:6  | expected an enum name, found '{'",
+			"message A { oneof { int32 x = 1; } }           | 1:19 | expected a oneof name, found '{'",
+			"message A { oneof o { int32 x = 1; }           | 1:37 | missing '}' to close message A opened at 1:1",
+			"option x = ;                                   | 1:12 | expected an option value, found ';'",
+	})
+	void syntaxErrorsSayWhatIsMissingWhereItIsMissing(String text, String where, String message) {
+		ProtoFile file = parse(text);
+		assertEquals(where + ": " + message, file.problems().isEmpty() ? "no problem" : at(file.problems().get(0)) + ": "
+				+ file.problems().get(0).message(), () -> file.problems().toString());
 	}
 }

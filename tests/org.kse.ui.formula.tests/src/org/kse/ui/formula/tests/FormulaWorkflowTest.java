@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.ui.formula.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -45,6 +45,8 @@ import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.ui.formula.FormulaContentAssist;
 import org.kse.ui.formula.FormulaEditor;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * A behaviour developer's first steps in the workbench: a project with the Goalie's formulas,

@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.ui.statechart.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -33,6 +33,8 @@ import org.kse.model.statechart.Node;
 import org.kse.ui.statechart.diagram.DiagramPage;
 import org.kse.ui.statechart.diagram.WorkspaceDiagramServer;
 import org.kse.ui.statechart.editor.StatechartEditor;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * The statechart editor's Diagram tab inside the KSE workbench: the diagram page in an SWT Browser,

@@ -1,4 +1,4 @@
-package org.kse.ui.tests;
+package org.kse.ui.formula.tests;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -22,6 +22,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.kse.liveness.FormulaLoader;
 import org.kse.ui.formula.FormulaEditor;
+import org.kse.testing.ui.Ui;
+import org.kse.testing.ui.UnexpectedDialogs;
 
 /**
  * Benchmark (prints figures, asserts only that markers come and go): in a 500-line formula
