@@ -33,7 +33,7 @@ else
   ./mvnw -B clean verify
 fi
 mkdir -p "$out"
-for bundle in tests/org.kse.ui.tests tests/org.kse.ui.formula.tests tests/org.kse.ui.statechart.tests; do
+for bundle in tests/org.kse.ui.tests tests/org.kse.ui.formula.tests tests/org.kse.ui.statechart.tests tests/org.kse.ui.messages.tests; do
   echo "   screenshots of ${bundle#tests/}: $(ls "$bundle/target/screenshots" 2>/dev/null | tr '\n' ' ')"
 done
 

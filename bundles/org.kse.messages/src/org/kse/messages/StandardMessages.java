@@ -9,8 +9,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.SequencedMap;
 import java.util.Set;
 import java.util.stream.Stream;
 
@@ -81,16 +83,27 @@ public final class StandardMessages {
 	private static List<ProtoFile> parseStandard() {
 		List<ProtoFile> parsed = new ArrayList<>();
 		for (String name : FILES) {
-			try (InputStream in = StandardMessages.class.getResourceAsStream("standard/" + name)) {
-				if (in == null) {
-					throw new IllegalStateException("the KSE bundle lacks its standard message file " + name);
-				}
-				parsed.add(ProtoReader.read(Path.of(FOLDER + name), new String(in.readAllBytes(), StandardCharsets.UTF_8)));
-			} catch (IOException e) {
-				throw new UncheckedIOException(e);
-			}
+			parsed.add(ProtoReader.read(Path.of(FOLDER + name), text(name)));
 		}
 		return List.copyOf(parsed);
+	}
+
+	/**
+	 * The text of a standard file as bundled, by its name in {@link #FILES} (an editor shows it,
+	 * read-only: the standard files are no workspace files).
+	 */
+	public static String text(String name) {
+		if (!FILES.contains(name)) {
+			throw new IllegalArgumentException("not a standard message file: " + name);
+		}
+		try (InputStream in = StandardMessages.class.getResourceAsStream("standard/" + name)) {
+			if (in == null) {
+				throw new IllegalStateException("the KSE bundle lacks its standard message file " + name);
+			}
+			return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+		} catch (IOException e) {
+			throw new UncheckedIOException(e);
+		}
 	}
 
 	/** The standard messages alone. */
@@ -115,42 +128,48 @@ public final class StandardMessages {
 
 	/**
 	 * {@link #merge(List)} without some of the folders' files (absolute, normalized paths): what
-	 * a build that leaves those files out has.
+	 * a build that leaves those files out has. A file under two of the folders is read once, under
+	 * the first.
 	 */
-	private static String readText(Path file) throws IOException {
-		try {
-			return Files.readString(file, StandardCharsets.UTF_8);
-		} catch (MalformedInputException e) {
-			throw new IOException(file + ": not a text file (it is not UTF-8)", e);
-		}
-	}
-
 	public static Merged merge(List<Path> folders, Set<Path> leftOut) {
-		List<ProtoFile> user = new ArrayList<>();
-		Map<Path, Path> userFiles = new HashMap<>();
-		Map<String, Path> defined = new HashMap<>();
+		SequencedMap<Path, ProtoFile> user = new LinkedHashMap<>();
 		for (Path folder : folders) {
 			if (!Files.isDirectory(folder)) {
 				continue;
 			}
 			try (Stream<Path> walk = Files.walk(folder)) {
 				for (Path file : walk.filter(p -> p.toString().endsWith(".proto") && Files.isRegularFile(p)).sorted().toList()) {
-					if (leftOut.contains(file.toAbsolutePath().normalize())) {
-						continue;
+					if (!leftOut.contains(file.toAbsolutePath().normalize())) {
+						user.putIfAbsent(file, ProtoReader.read(folder.relativize(file), readText(file)));
 					}
-					ProtoFile parsed = ProtoReader.read(folder.relativize(file), readText(file));
-					userFiles.putIfAbsent(folder.relativize(file), file);
-					user.add(parsed);
-					parsed.messages().forEach(type -> defined.putIfAbsent(type.fullName(), file));
-					parsed.enums().forEach(type -> defined.putIfAbsent(type.fullName(), file));
 				}
 			} catch (IOException e) {
 				throw new UncheckedIOException(e);
 			}
 		}
-		if (user.isEmpty()) {
+		return merge(user);
+	}
+
+	/**
+	 * {@link #merge(List)} of files already parsed (an editor's unsaved text among them), in
+	 * catalog order. Each key is where the file is on disk, what a user opens; each value was
+	 * read under its path relative to its folder ({@code ProtoReader.read(folder.relativize(file), text)}),
+	 * the name other files import it by. The files are linked in place: parse them afresh for
+	 * each merge.
+	 */
+	public static Merged merge(SequencedMap<Path, ProtoFile> files) {
+		if (files.isEmpty()) {
 			return new Merged(catalog(), List.of(), Map.of());
 		}
+		List<ProtoFile> user = new ArrayList<>();
+		Map<Path, Path> userFiles = new HashMap<>();
+		Map<String, Path> defined = new HashMap<>();
+		files.forEach((file, parsed) -> {
+			userFiles.putIfAbsent(parsed.file(), file);
+			user.add(parsed);
+			parsed.messages().forEach(type -> defined.putIfAbsent(type.fullName(), file));
+			parsed.enums().forEach(type -> defined.putIfAbsent(type.fullName(), file));
+		});
 		List<Replacement> replacements = new ArrayList<>();
 		// Linking a catalog resolves the field types of its files in place: the shared standard
 		// files must never see a user's types, so a merge that drops some works on its own copy.
@@ -170,6 +189,14 @@ public final class StandardMessages {
 		}
 		merged.addAll(user);
 		return new Merged(MessageCatalog.of(merged), List.copyOf(replacements), Map.copyOf(userFiles));
+	}
+
+	private static String readText(Path file) throws IOException {
+		try {
+			return Files.readString(file, StandardCharsets.UTF_8);
+		} catch (MalformedInputException e) {
+			throw new IOException(file + ": not a text file (it is not UTF-8)", e);
+		}
 	}
 
 	private static boolean replaces(ProtoFile file, Map<String, Path> defined) {

@@ -8,20 +8,23 @@ import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IWorkspace;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.ILog;
+import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.jface.text.IRegion;
 import org.eclipse.jface.text.reconciler.DirtyRegion;
 import org.eclipse.jface.text.reconciler.IReconcilingStrategy;
+import org.eclipse.jface.text.reconciler.IReconcilingStrategyExtension;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.validation.Issue;
 import org.kse.liveness.FormulaLoader;
 
 /**
  * Checks the formulas whenever typing pauses and shows what is wrong as problem markers on the
- * file (Problems view, ruler, squiggles); they follow the text, saved or not.
+ * file (Problems view, ruler, squiggles); they follow the text, saved or not. A file is also
+ * checked when it opens: the reconciler checks at once only a strategy with the extension.
  */
-class FormulaChecker implements IReconcilingStrategy {
+class FormulaChecker implements IReconcilingStrategy, IReconcilingStrategyExtension {
 
 	static final String MARKER = "org.kse.ui.formulaProblem";
 
@@ -45,6 +48,16 @@ class FormulaChecker implements IReconcilingStrategy {
 	@Override
 	public void reconcile(IRegion partition) {
 		check();
+	}
+
+	@Override
+	public void initialReconcile() {
+		check();
+	}
+
+	@Override
+	public void setProgressMonitor(IProgressMonitor monitor) {
+		// a check takes milliseconds: nothing to cancel
 	}
 
 	private void check() {

@@ -7,7 +7,9 @@ import static org.kse.messages.tests.Protos.assertNoProblems;
 import static org.kse.messages.tests.Protos.write;
 
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.SequencedMap;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -15,6 +17,8 @@ import org.kse.messages.Field;
 import org.kse.messages.FieldType;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.MessageType;
+import org.kse.messages.ProtoFile;
+import org.kse.messages.ProtoReader;
 import org.kse.messages.StandardMessages;
 
 /** The standard messages merged with a source tree's own: the tree's definition of a name wins. */
@@ -77,5 +81,22 @@ class StandardMessagesTest {
 		MessageType team = merged.catalog().message("TeamMessage").orElseThrow();
 		assertTrue(merged.catalog().resolveMember(team, List.of("seen", "balls")).isPresent());
 		assertEquals(List.of(), StandardMessages.merge(List.of(dir.resolve("missing"))).replacements());
+	}
+
+	@Test
+	void parsedFilesMergeAsTheirFolderWouldWithAnEditorsTextInPlaceOfTheDisk() {
+		write(dir, "Common.proto", "syntax = \"proto2\";\nmessage Position { optional float x = 1; }\n");
+		write(dir, "Team.proto", "syntax = \"proto2\";\nimport \"Common.proto\";\nmessage Team { optional Position where = 1; }\n");
+		// the editor's unsaved text of Team.proto names a type nobody declares
+		SequencedMap<Path, ProtoFile> files = new LinkedHashMap<>();
+		files.put(dir.resolve("Common.proto"), ProtoReader.read(Path.of("Common.proto"), "syntax = \"proto2\";\nmessage Position { optional float x = 1; }\n"));
+		files.put(dir.resolve("Team.proto"), ProtoReader.read(Path.of("Team.proto"),
+				"syntax = \"proto2\";\nimport \"Common.proto\";\nmessage Team { optional Positon where = 1; }\nmessage GameStateMessage { optional int32 x = 1; }\n"));
+		StandardMessages.Merged merged = StandardMessages.merge(files);
+		assertEquals(List.of(dir.resolve("Team.proto") + ":3:25: unknown type Positon of field where in message Team"),
+				merged.problems().stream().map(Object::toString).toList(), "the problems with the paths a user opens");
+		assertEquals(List.of(new StandardMessages.Replacement("GameStateMessage", Path.of("kse/messages/Gamecontroller.proto"),
+				dir.resolve("Team.proto"))), merged.replacements());
+		assertNoProblems(StandardMessages.merge(List.of(dir)).problems());
 	}
 }

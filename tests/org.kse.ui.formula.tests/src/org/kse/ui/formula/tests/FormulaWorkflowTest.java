@@ -109,6 +109,29 @@ class FormulaWorkflowTest {
 		Ui.screenshot("01-goalie-formulas");
 	}
 
+	/** A file is checked when it opens, before anyone types in it. */
+	@Test
+	@Order(6)
+	void aBrokenFormulaFileShowsItsProblemOnOpening() throws Exception {
+		IFile broken = project.getFile("Broken.liveness");
+		broken.create(new ByteArrayInputStream("broken = Init.(Scan | \n".getBytes(java.nio.charset.StandardCharsets.UTF_8)), true, null);
+		IEditorPart part = IDE.openEditor(Ui.page(), broken, FormulaEditor.ID);
+		try {
+			assertTrue(Ui.waitUntil(() -> problems(broken) > 0, 10_000), "the unclosed parenthesis is marked without a keystroke");
+		} finally {
+			Ui.page().closeEditor(part, false);
+			broken.delete(true, null);
+		}
+	}
+
+	private static int problems(IFile file) {
+		try {
+			return file.findMarkers(MARKER, false, IResource.DEPTH_ZERO).length;
+		} catch (CoreException e) {
+			throw new AssertionError(e);
+		}
+	}
+
 	@Test
 	@Order(2)
 	void anErrorMarkerAppearsWhileTypingAndGoesWhenFixed() throws Exception {
