@@ -5,6 +5,7 @@ import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.Region;
 import org.eclipse.jface.text.hyperlink.AbstractHyperlinkDetector;
 import org.eclipse.jface.text.hyperlink.IHyperlink;
+import org.kse.ui.text.Jump;
 
 /** Ctrl+click (or F3 through the editor's action) on a capability goes to its definition. */
 class FormulaHyperlinks extends AbstractHyperlinkDetector {
@@ -28,27 +29,7 @@ class FormulaHyperlinks extends AbstractHyperlinkDetector {
 		if (definition == null || definition.offset() == start) {
 			return null;
 		}
-		Region word = new Region(start, end - start);
-		return new IHyperlink[] { new IHyperlink() {
-			@Override
-			public IRegion getHyperlinkRegion() {
-				return word;
-			}
-
-			@Override
-			public String getTypeLabel() {
-				return "Definition";
-			}
-
-			@Override
-			public String getHyperlinkText() {
-				return "Go to the definition of " + definition.name();
-			}
-
-			@Override
-			public void open() {
-				editor.selectAndReveal(definition.offset(), definition.name().length());
-			}
-		} };
+		return new IHyperlink[] { new Jump(new Region(start, end - start), "Definition", "Go to the definition of " + definition.name(),
+				() -> editor.selectAndReveal(definition.offset(), definition.name().length())) };
 	}
 }

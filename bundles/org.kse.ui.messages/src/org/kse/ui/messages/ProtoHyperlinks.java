@@ -5,6 +5,7 @@ import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.Region;
 import org.eclipse.jface.text.hyperlink.AbstractHyperlinkDetector;
 import org.eclipse.jface.text.hyperlink.IHyperlink;
+import org.kse.ui.text.Jump;
 
 /** Ctrl+click on a field's type name goes to the declaration of that message or enum. */
 public class ProtoHyperlinks extends AbstractHyperlinkDetector {
@@ -22,27 +23,7 @@ public class ProtoHyperlinks extends AbstractHyperlinkDetector {
 			return null;
 		}
 		LinkedProto.Declaration declaration = at.declaration().get();
-		Region word = new Region(at.start(), at.end() - at.start());
-		return new IHyperlink[] { new IHyperlink() {
-			@Override
-			public IRegion getHyperlinkRegion() {
-				return word;
-			}
-
-			@Override
-			public String getTypeLabel() {
-				return "Declaration";
-			}
-
-			@Override
-			public String getHyperlinkText() {
-				return "Go to the declaration of " + declaration.type().fullName();
-			}
-
-			@Override
-			public void open() {
-				editor.open(declaration);
-			}
-		} };
+		return new IHyperlink[] { new Jump(new Region(at.start(), at.end() - at.start()), "Declaration",
+				"Go to the declaration of " + declaration.type().fullName(), () -> editor.open(declaration)) };
 	}
 }
