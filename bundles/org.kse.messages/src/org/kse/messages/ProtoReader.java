@@ -43,6 +43,7 @@ import org.kse.proto.proto.SyntaxDecl;
 import org.kse.proto.proto.UnexpectedElement;
 import org.kse.proto.proto.UnexpectedEnumElement;
 import org.kse.proto.proto.UnexpectedStatement;
+import org.kse.proto.ProtoTokens;
 import org.kse.proto.validation.ProtoSyntaxErrorMessageProvider;
 import org.kse.xtext.support.TextParsing;
 
@@ -447,25 +448,11 @@ public final class ProtoReader {
 		boolean inRun = previous instanceof UnexpectedStatement || previous instanceof UnexpectedElement
 				|| previous instanceof UnexpectedEnumElement;
 		if (!inRun && token != null && !syntaxErrorOffsets.contains(start(element))) {
-			report(start(element), expected + ", found " + describe(token));
+			report(start(element), expected + ", found " + ProtoTokens.describe(token));
 		}
 	}
 
 	/** How a token is named in a problem message. */
-	private static String describe(String token) {
-		if (isString(token)) {
-			char quote = token.charAt(0);
-			String inner = token.length() >= 2 && token.charAt(token.length() - 1) == quote ? token.substring(1, token.length() - 1)
-					: token.substring(1);
-			return "string \"" + abbreviate(inner) + "\"";
-		}
-		return "'" + abbreviate(token) + "'";
-	}
-
-	private static String abbreviate(String s) {
-		return s.length() <= 40 ? s : s.substring(0, 37) + "...";
-	}
-
 	// ---- numbers and strings
 
 	/** An integer literal's value ({@code Long.MAX_VALUE} when too large), or null for anything else. */
@@ -517,7 +504,7 @@ public final class ProtoReader {
 		StringBuilder value = new StringBuilder();
 		for (INode node : NodeModelUtils.findNodesForFeature(object, feature)) {
 			for (ILeafNode leaf : node.getLeafNodes()) {
-				if (!leaf.isHidden() && isString(leaf.getText())) {
+				if (!leaf.isHidden() && ProtoTokens.isString(leaf.getText())) {
 					value.append(decode(leaf.getText(), leaf.getOffset(), false));
 				}
 			}
@@ -525,9 +512,6 @@ public final class ProtoReader {
 		return value.toString();
 	}
 
-	private static boolean isString(String token) {
-		return !token.isEmpty() && (token.charAt(0) == '"' || token.charAt(0) == '\'');
-	}
 
 	/**
 	 * The value of a string literal as written (quotes included). With {@code check}, reports what

@@ -23,6 +23,7 @@ import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.parser.antlr.SyntaxErrorMessageProvider;
 import org.eclipse.xtext.util.LineAndColumn;
 import org.kse.proto.parser.antlr.internal.InternalProtoParser;
+import org.kse.proto.ProtoTokens;
 
 /**
  * Syntax errors in the words a protobuf writer uses ("expected ';' after field x", "missing '}' to
@@ -381,17 +382,7 @@ public class ProtoSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider 
 		if (token.getType() == Token.EOF) {
 			return "end of file";
 		}
-		String text = token.getText() == null ? "" : token.getText();
-		if (token.getType() == InternalProtoParser.RULE_STRING) {
-			String inner = text.length() >= 2 && text.charAt(text.length() - 1) == text.charAt(0) ? text.substring(1, text.length() - 1)
-					: text.substring(1);
-			return "string \"" + abbreviate(inner) + "\"";
-		}
-		return "'" + abbreviate(text) + "'";
-	}
-
-	private static String abbreviate(String s) {
-		return s.length() <= 40 ? s : s.substring(0, 37) + "...";
+		return ProtoTokens.describe(token.getText() == null ? "" : token.getText());
 	}
 
 	private static int start(Token token) {
