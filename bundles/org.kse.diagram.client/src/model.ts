@@ -19,6 +19,7 @@ import {
     popupFeature,
     withEditLabelFeature
 } from '@eclipse-glsp/client';
+import { NOTATION, isCircle } from './notation-style';
 
 export const DIAGRAM_TYPE = 'kse-statechart';
 
@@ -29,16 +30,12 @@ export const TRANSITION = 'transition';
 
 export type StateKind = 'start' | 'end' | 'condition' | 'basic' | 'or' | 'and' | 'unknown';
 
-/** The kinds the page knows how to draw; a kind the server adds before it has a drawing is drawn as 'unknown'. */
-const DRAWN_KINDS: readonly StateKind[] = ['start', 'end', 'condition', 'basic', 'or', 'and', 'unknown'];
-
-/** The kinds drawn as discs (their edges end on the circle, not on a box). */
-const ROUND_KINDS: ReadonlySet<string> = new Set(['start', 'end', 'condition']);
-
+/** The kinds the page knows how to draw (those the notation's style draws); a kind the server adds before it has a drawing is drawn as 'unknown'. */
+const DRAWN_KINDS: readonly string[] = Object.keys(NOTATION.states);
 
 export function stateKindOf(type: string): StateKind {
     const kind = type.startsWith(STATE_PREFIX) ? type.substring(STATE_PREFIX.length) : 'unknown';
-    return (DRAWN_KINDS as readonly string[]).includes(kind) ? (kind as StateKind) : 'unknown';
+    return DRAWN_KINDS.includes(kind) ? (kind as StateKind) : 'unknown';
 }
 
 function argsOf(element: GModelElement): Args {
@@ -67,7 +64,8 @@ export class StateNode extends GNode {
     }
 
     get isRound(): boolean {
-        return ROUND_KINDS.has(this.kind);
+        // drawn as a circle (the notation's style says which kinds are): edges end on the circle
+        return isCircle(this.kind);
     }
 
     /** Whether the state holds others (and shows its name in a header): the server's rule book says which kinds do. */

@@ -1,7 +1,9 @@
 /*
  * Views of the thesis notation: START a black disc, END a ringed disc, CONDITION a white circle with
  * "C", BASIC a green rounded box, OR a yellow and AND a light blue box holding their children.
- * Colours are those of org.kse.notation's SvgDiagram, so that exported pictures match.
+ * Every shape, colour, stroke and font is the notation's style (notation-style.ts, the file
+ * org.kse.notation's SvgDiagram draws `kse diagram`'s SVG from): shapes get it as presentation
+ * attributes, texts as inline style; kse.css only changes them for selection, hover and dragging.
  */
 import {
     ATTR_BBOX_ELEMENT,
@@ -18,17 +20,7 @@ import {
 import { injectable } from 'inversify';
 import { VNode } from 'snabbdom';
 import { ExpressionLabel, NameLabel, StateKind, StateNode } from './model';
-
-/** Fill and stroke of each kind (org.kse.notation.SvgDiagram). */
-export const NOTATION_COLOURS: Record<StateKind, { fill: string; stroke: string }> = {
-    start: { fill: '#000000', stroke: '#000000' },
-    end: { fill: '#ffffff', stroke: '#000000' },
-    condition: { fill: '#ffffff', stroke: '#000000' },
-    basic: { fill: '#b9e4a4', stroke: '#3d7a2b' },
-    or: { fill: '#fff5c2', stroke: '#a68b22' },
-    and: { fill: '#d8ecff', stroke: '#4a7fb0' },
-    unknown: { fill: '#eeeeee', stroke: '#888888' }
-};
+import { NOTATION, StateStyle, textStyle } from './notation-style';
 
 const bbox = { [ATTR_BBOX_ELEMENT]: true };
 
@@ -64,44 +56,59 @@ export class StateView extends ShapeView {
         };
     }
 
+    /**
+     * The outline's presentation attributes. GLSP's CSS sets every node's stroke width (to 0), which
+     * beats an attribute: the width also goes in --kse-stroke-width, which kse.css gives the shape.
+     */
+    protected outline(style: StateStyle): Record<string, unknown> {
+        return {
+            fill: style.fill,
+            stroke: style.stroke,
+            'stroke-width': style.strokeWidth,
+            ...(style.dash ? { 'stroke-dasharray': style.dash } : {}),
+            style: { '--kse-stroke-width': `${style.strokeWidth}px` }
+        };
+    }
+
     protected renderShape(node: Readonly<StateNode>, kind: StateKind, width: number, height: number): VNode[] {
-        const colours = NOTATION_COLOURS[kind];
+        const style = NOTATION.states[kind];
         const classes = this.shapeClasses(node);
         const cx = width / 2;
         const cy = height / 2;
         const r = Math.min(width, height) / 2;
-        switch (kind) {
-            case 'start':
-                return [<circle {...classes} cx={cx} cy={cy} r={r} fill={colours.fill} stroke={colours.stroke} stroke-width={1} />];
-            case 'end':
+        switch (style.shape) {
+            case 'disc':
+            case 'circledLetter':
+                // the letter is the state's name label (the server sends it), drawn by NameLabelView
+                return [<circle {...classes} cx={cx} cy={cy} r={Math.max(r - (style.inset ?? 0), 1)} {...this.outline(style)} />];
+            case 'ringedDisc':
                 return [
-                    <circle {...classes} cx={cx} cy={cy} r={Math.max(r - 1, 1)} fill={colours.fill} stroke={colours.stroke} stroke-width={1.5} />,
-                    <circle class-kse-end-centre={true} cx={cx} cy={cy} r={r * 0.55} fill='#000000' />
+                    <circle {...classes} cx={cx} cy={cy} r={Math.max(r - (style.inset ?? 0), 1)} {...this.outline(style)} />,
+                    <circle class-kse-end-centre={true} cx={cx} cy={cy} r={r * (style.innerDisc?.ratio ?? 0)} fill={style.innerDisc?.fill ?? 'none'} />
                 ];
-            case 'condition':
-                return [<circle {...classes} cx={cx} cy={cy} r={Math.max(r - 1, 1)} fill={colours.fill} stroke={colours.stroke} stroke-width={1.5} />];
-            case 'basic':
-                return [<rect {...classes} x={0} y={0} width={width} height={height} rx={8} ry={8} fill={colours.fill} stroke={colours.stroke} stroke-width={1} />];
-            case 'or':
-            case 'and': {
-                const box = <rect {...classes} x={0} y={0} width={width} height={height} rx={3} ry={3} fill={colours.fill} stroke={colours.stroke} stroke-width={1} />;
+            case 'compositeBox': {
+                const radius = style.cornerRadius ?? 0;
+                const box = <rect {...classes} x={0} y={0} width={width} height={height} rx={radius} ry={radius} {...this.outline(style)} />;
+                const label = NOTATION.captions.label;
                 // the label gives way to the caption in a narrow composite (hovering shows both)
-                const captionRight = 8 + (node.nameLabel?.bounds.width ?? 0) + 10;
+                const captionRight = NOTATION.captions.header.x + (node.nameLabel?.bounds.width ?? 0) + 10;
                 const labelWidth = node.hierarchicalLabel.length * HIERARCHICAL_LABEL_CHARACTER_WIDTH;
-                if (captionRight + labelWidth > width - 6) {
+                if (captionRight + labelWidth > width - label.right) {
                     return [box];
                 }
                 return [
                     box,
-                    <text class-kse-hierarchical-label={true} x={Math.max(width - 6, 0)} y={16}>
+                    <text class-kse-hierarchical-label={true} x={Math.max(width - label.right, 0)} y={label.baseline} {...textStyle(label, 'end')}>
                         {node.hierarchicalLabel}
                     </text>
                 ];
             }
-            default:
+            default: {
+                const radius = style.cornerRadius ?? 0;
                 return [
-                    <rect {...classes} class-kse-unknown={true} x={0} y={0} width={width} height={height} rx={2} ry={2} fill={colours.fill} stroke={colours.stroke} stroke-width={1} stroke-dasharray='4 3' />
+                    <rect {...classes} class-kse-unknown={kind === 'unknown'} x={0} y={0} width={width} height={height} rx={radius} ry={radius} {...this.outline(style)} />
                 ];
+            }
         }
     }
 }
@@ -115,8 +122,10 @@ export class NameLabelView extends ShapeView {
     render(label: Readonly<NameLabel>, context: RenderingContext): VNode | undefined {
         const owner = label.owner;
         if (owner !== undefined && owner.isComposite) {
+            const header = NOTATION.captions.header;
+            // the baseline where kse diagram puts it, whatever the label's position in the header
             const caption = (
-                <text class-sprotty-label={true} class-kse-name={true} class-kse-composite-name={true} x={0} y={12}>
+                <text class-sprotty-label={true} class-kse-name={true} class-kse-composite-name={true} x={0} y={header.baseline - label.position.y} {...textStyle(header, 'start')}>
                     {label.text}
                 </text>
             );
@@ -134,8 +143,10 @@ export class NameLabelView extends ShapeView {
         const position = label.position;
         const x = owner ? owner.size.width / 2 - position.x : 0;
         const y = owner ? owner.size.height / 2 - position.y : 0;
+        const letter = owner !== undefined && NOTATION.states[owner.kind].shape === 'circledLetter';
+        const font = letter ? NOTATION.captions.letter : NOTATION.captions.centred;
         return (
-            <text class-sprotty-label={true} class-kse-name={true} class-kse-centred-name={true} class-kse-condition-name={owner?.kind === 'condition'} x={x} y={y}>
+            <text class-sprotty-label={true} class-kse-name={true} class-kse-centred-name={true} class-kse-condition-name={owner?.kind === 'condition'} x={x} y={y} {...textStyle(font, 'middle', 'central')}>
                 {label.text}
             </text>
         );
@@ -151,7 +162,7 @@ export class NameLabelView extends ShapeView {
 export class ExpressionLabelView extends ShapeView {
     render(label: Readonly<ExpressionLabel>, _context: RenderingContext): VNode | undefined {
         return (
-            <text class-sprotty-label={true} class-kse-expression={true} x={2} y={1}>
+            <text class-sprotty-label={true} class-kse-expression={true} x={NOTATION.transitions.label.x} y={NOTATION.transitions.label.y} {...textStyle(NOTATION.transitions.label, 'start', 'text-before-edge')}>
                 {label.text}
             </text>
         );
@@ -166,7 +177,7 @@ export class PlainLabelView extends ShapeView {
     }
 }
 
-/** A transition (TransitionEdge): a dark grey line ending in a filled arrow head at its target. */
+/** A transition (TransitionEdge): a line ending in a filled arrow head at its target, in the notation's style. */
 @injectable()
 export class TransitionView extends GEdgeView {
     override render(edge: Readonly<GEdge>, context: RenderingContext): VNode {
@@ -179,7 +190,8 @@ export class TransitionView extends GEdgeView {
     }
 
     protected override renderLine(_edge: GEdge, segments: Point[], _context: RenderingContext): VNode {
-        return <path class-kse-line={true} d={this.createPathForSegments(segments)} />;
+        const line = NOTATION.transitions.line;
+        return <path class-kse-line={true} d={this.createPathForSegments(segments)} fill='none' stroke={line.colour} stroke-width={line.width} />;
     }
 
     protected override renderAdditionals(edge: GEdge, segments: Point[], context: RenderingContext): VNode[] {
@@ -188,8 +200,17 @@ export class TransitionView extends GEdgeView {
             const end = segments[segments.length - 1];
             const before = segments[segments.length - 2];
             const angle = toDegrees(angleOfPoint(Point.subtract(end, before)));
+            const arrow = NOTATION.transitions.arrow;
             additionals.push(
-                <path class-kse-arrow={true} d='M 0,0 L -10,-4.5 L -10,4.5 Z' transform={`translate(${end.x} ${end.y}) rotate(${angle})`} />
+                <path
+                    class-kse-arrow={true}
+                    d={`M 0,0 L ${-arrow.length},${-arrow.width / 2} L ${-arrow.length},${arrow.width / 2} Z`}
+                    transform={`translate(${end.x} ${end.y}) rotate(${angle})`}
+                    fill={arrow.fill}
+                    stroke={arrow.stroke}
+                    stroke-width={arrow.strokeWidth}
+                    stroke-linejoin='round'
+                />
             );
             // a wide transparent stroke along the line makes the edge easy to hover and click
             additionals.push(<path class-kse-edge-handle={true} d={this.createPathForSegments(segments)} />);

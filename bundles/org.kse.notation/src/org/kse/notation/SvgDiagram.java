@@ -16,10 +16,14 @@ import org.kse.model.statechart.Transition;
  * with a black centre, CONDITION a circled "C", BASIC a green rounded box, OR a yellow box with
  * its name over its children, AND a light-blue box holding its regions. Transitions are arrows
  * labelled with the first line of their expression; the whole expression shows on hover (title).
+ * Shapes, colours and fonts come from {@link NotationStyle}, as the diagram page's do; each
+ * state's shape, caption and label carry the classes {@code shape}, {@code caption} and
+ * {@code label}, a transition's line and text {@code line} and {@code expression}.
  */
 public final class SvgDiagram {
 
 	private static final double MARGIN = 20;
+	private static final NotationStyle STYLE = NotationStyle.get();
 
 	private SvgDiagram() {
 	}
@@ -53,10 +57,9 @@ public final class SvgDiagram {
 		}
 		StringBuilder svg = new StringBuilder();
 		svg.append(String.format(Locale.ROOT, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
-				+ "font-family=\"sans-serif\" font-size=\"12\">%n", width, height, width, height));
+				+ "font-family=\"%s\" font-size=\"%s\">%n", width, height, width, height, escape(STYLE.fontFamily()), number(STYLE.centredCaption().size())));
 		svg.append("<title>").append(escape(model.getName())).append("</title>\n");
-		svg.append("<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" markerWidth=\"8\" markerHeight=\"8\" orient=\"auto-start-reverse\">"
-				+ "<path d=\"M0,0 L10,5 L0,10 z\" fill=\"#333\"/></marker></defs>\n");
+		svg.append(arrowMarker());
 		svg.append("<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
 		for (Node node : order) {
 			state(svg, node, placed.get(node));
@@ -83,31 +86,47 @@ public final class SvgDiagram {
 	private static void state(StringBuilder svg, Node node, Bounds b) {
 		NodeKind kind = NodeKind.of(node);
 		String kindName = kind == null ? "unknown" : kind.name().toLowerCase(Locale.ROOT);
+		NotationStyle.StateStyle style = STYLE.of(kind);
 		svg.append(String.format(Locale.ROOT, "<g class=\"state %s\" data-label=\"%s\"><title>%s %s (%s)</title>", kindName, escape(node.getLabel()),
 				escape(node.getLabel()), escape(node.getName()), kind == null ? escape(node.getType()) : kind.name()));
 		double cx = b.x() + b.width() / 2;
 		double cy = b.y() + b.height() / 2;
 		double r = Math.min(b.width(), b.height()) / 2;
-		if (kind == NodeKind.START) {
-			svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"black\"/>", cx, cy, r));
-		} else if (kind == NodeKind.END) {
-			svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"white\" stroke=\"black\" stroke-width=\"1.5\"/>"
-					+ "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"black\"/>", cx, cy, r - 1, cx, cy, r * 0.55));
-		} else if (kind == NodeKind.CONDITION) {
-			svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"white\" stroke=\"black\" stroke-width=\"1.5\"/>"
-					+ "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" dominant-baseline=\"central\" font-weight=\"bold\">C</text>", cx, cy, r - 1, cx, cy));
-		} else if (kind == NodeKind.BASIC) {
-			svg.append(String.format(Locale.ROOT, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" rx=\"8\" fill=\"#b9e4a4\" stroke=\"#3d7a2b\"/>"
-					+ "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" dominant-baseline=\"central\">%s</text>", b.x(), b.y(), b.width(), b.height(), cx, cy,
-					escape(node.getName())));
+		String outline = String.format(Locale.ROOT, "fill=\"%s\" stroke=\"%s\" stroke-width=\"%s\"%s", style.fill(), style.stroke(),
+				number(style.strokeWidth()), style.dash() == null ? "" : " stroke-dasharray=\"" + escape(style.dash()) + "\"");
+		if (style.isCircle()) {
+			svg.append(String.format(Locale.ROOT, "<circle class=\"shape\" cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" %s/>", cx, cy, Math.max(r - style.inset(), 1),
+					outline));
+			if (style.shape() == NotationStyle.Shape.RINGED_DISC) {
+				svg.append(String.format(Locale.ROOT, "<circle class=\"centre\" cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"%s\"/>", cx, cy,
+						r * style.innerDiscRatio(), style.innerDiscFill()));
+			} else if (style.shape() == NotationStyle.Shape.CIRCLED_LETTER) {
+				text(svg, "caption", cx, cy, "middle", "central", STYLE.letterCaption(), style.letter());
+			}
 		} else {
-			boolean and = kind == NodeKind.AND;
-			svg.append(String.format(Locale.ROOT, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" rx=\"3\" fill=\"%s\" stroke=\"%s\"/>"
-					+ "<text x=\"%.1f\" y=\"%.1f\" font-weight=\"bold\">%s</text><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#666\" font-size=\"11\">%s</text>",
-					b.x(), b.y(), b.width(), b.height(), and ? "#d8ecff" : "#fff5c2", and ? "#4a7fb0" : "#a68b22", b.x() + 8, b.y() + 18,
-					escape(Captions.of(node)), b.right() - 6, b.y() + 16, escape(node.getLabel())));
+			svg.append(String.format(Locale.ROOT, "<rect class=\"shape\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" rx=\"%s\" %s/>", b.x(), b.y(),
+					b.width(), b.height(), number(style.cornerRadius()), outline));
+			// as the diagram page draws the name: in the header of a kind that holds others (the rule book's), else in the middle
+			if (kind != null && kind.isComposite()) {
+				NotationStyle.TextStyle header = STYLE.headerCaption();
+				text(svg, "caption", b.x() + header.x(), b.y() + header.y(), "start", null, header, Captions.of(node));
+			} else {
+				text(svg, "caption", cx, cy, "middle", "central", STYLE.centredCaption(), Captions.of(node));
+			}
+			if (style.shape() == NotationStyle.Shape.COMPOSITE_BOX) {
+				NotationStyle.TextStyle label = STYLE.label();
+				text(svg, "label", b.right() - label.x(), b.y() + label.y(), "end", null, label, node.getLabel());
+			}
 		}
 		svg.append("</g>\n");
+	}
+
+	/** A text in its style: font, weight and colour written on the element, as the diagram page writes them. */
+	private static void text(StringBuilder svg, String cssClass, double x, double y, String anchor, String baseline, NotationStyle.TextStyle style,
+			String text) {
+		svg.append(String.format(Locale.ROOT, "<text class=\"%s\" x=\"%.1f\" y=\"%.1f\" text-anchor=\"%s\"%s font-size=\"%s\" font-weight=\"%s\" fill=\"%s\">%s</text>",
+				cssClass, x, y, anchor, baseline == null ? "" : " dominant-baseline=\"" + baseline + "\"", number(style.size()), style.weight(), style.colour(),
+				escape(text)));
 	}
 
 	private static void transition(StringBuilder svg, Transition transition, TransitionLayout.Placed route, Bounds source, Bounds target) {
@@ -125,13 +144,35 @@ public final class SvgDiagram {
 		}
 		double[] to = TransitionLayout.border(target, last);
 		path.append(String.format(Locale.ROOT, " L%.1f,%.1f", to[0], to[1]));
-		svg.append("<path d=\"").append(path).append("\" fill=\"none\" stroke=\"#333\" marker-end=\"url(#arrow)\"/>");
+		svg.append(String.format(Locale.ROOT, "<path class=\"line\" d=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%s\" marker-end=\"url(#arrow)\"/>", path,
+				STYLE.line().colour(), number(STYLE.line().width())));
 		if (route.label() != null) {
 			Bounds label = route.label();
-			svg.append(String.format(Locale.ROOT, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.0f\" fill=\"#333\" dominant-baseline=\"text-before-edge\">%s</text>",
-					label.x() + MARGIN + 2, label.y() + MARGIN + 1, TransitionLayout.LABEL_FONT_SIZE, escape(route.text())));
+			NotationStyle.TextStyle style = STYLE.transitionLabel();
+			text(svg, "expression", label.x() + MARGIN + style.x(), label.y() + MARGIN + style.y(), "start", "text-before-edge", style, route.text());
 		}
 		svg.append("</g>\n");
+	}
+
+	/**
+	 * The arrow head as the diagram page draws it: a triangle with its tip at the line's end, in
+	 * the diagram's units (not scaled by the line's width, as a marker is by default).
+	 */
+	private static String arrowMarker() {
+		NotationStyle.Arrow arrow = STYLE.arrow();
+		double half = arrow.width() / 2;
+		double pad = arrow.strokeWidth();
+		return String.format(Locale.ROOT,
+				"<defs><marker id=\"arrow\" viewBox=\"%s %s %s %s\" refX=\"0\" refY=\"0\" markerWidth=\"%s\" markerHeight=\"%s\" markerUnits=\"userSpaceOnUse\" orient=\"auto\">"
+						+ "<path class=\"arrow\" d=\"M0,0 L%s,%s L%s,%s z\" fill=\"%s\" stroke=\"%s\" stroke-width=\"%s\" stroke-linejoin=\"round\"/></marker></defs>%n",
+				number(-arrow.length() - pad), number(-half - pad), number(arrow.length() + 2 * pad), number(arrow.width() + 2 * pad),
+				number(arrow.length() + 2 * pad), number(arrow.width() + 2 * pad), number(-arrow.length()), number(-half), number(-arrow.length()),
+				number(half), arrow.fill(), arrow.stroke(), number(arrow.strokeWidth()));
+	}
+
+	/** A length as SVG writes it: no trailing zeros ({@code 1.5}, {@code 8}). */
+	private static String number(double value) {
+		return value == Math.rint(value) ? String.valueOf((long) value) : String.valueOf(value);
 	}
 
 	private static String escape(String text) {

@@ -25,8 +25,8 @@ import org.kse.model.statechart.Transition;
  */
 public final class TransitionLayout {
 
-	/** Font size (px) of a transition's label, as the diagram draws it. */
-	public static final double LABEL_FONT_SIZE = 11;
+	/** Font size (px) of a transition's label, as the diagram draws it ({@link NotationStyle#transitionLabel()}). */
+	public static final double LABEL_FONT_SIZE = NotationStyle.get().transitionLabel().size();
 	/** Height of a label's box: one line of {@link #LABEL_FONT_SIZE}. */
 	public static final double LABEL_HEIGHT = 15;
 	/** Longer expressions are cut (with an ellipsis) in the label; hovering shows all of them. */
@@ -64,7 +64,7 @@ public final class TransitionLayout {
 
 	/** The size a label is drawn at: wide enough for DejaVu Sans, the widest of the fonts the diagram asks for. */
 	public static Bounds labelSize(String text) {
-		return new Bounds(0, 0, TextWidth.of(text, LABEL_FONT_SIZE, false) + 4, LABEL_HEIGHT);
+		return new Bounds(0, 0, TextWidth.of(text, LABEL_FONT_SIZE, NotationStyle.get().transitionLabel().bold()) + 4, LABEL_HEIGHT);
 	}
 
 	/** Every transition of the model whose ends are states, with states placed at {@code relative} (to their parents). */

@@ -22,6 +22,7 @@ import org.kse.model.statechart.Transition;
 import org.kse.notation.Bounds;
 import org.kse.notation.Captions;
 import org.kse.notation.Notation;
+import org.kse.notation.NotationStyle;
 import org.kse.notation.Shapes;
 import org.kse.notation.TextWidth;
 import org.kse.notation.TransitionLayout;
@@ -53,8 +54,8 @@ public final class StatechartGraph {
 
 	/** The id of the graph's root, which stands for the model. */
 	public static final String ROOT = "statechart";
-	/** The font sizes (px) the page draws names in (kse.css): a BASIC or CONDITION state's, a composite's caption. */
-	private static final double NAME_SIZE = 12, COMPOSITE_NAME_SIZE = 12;
+	/** How the page draws names: the notation's style, which its views read too. */
+	private static final NotationStyle STYLE = NotationStyle.get();
 
 	public static GGraph of(Model model, Notation notation) {
 		return of(model, node -> {
@@ -124,13 +125,17 @@ public final class StatechartGraph {
 				.addArgument("name", node.getName() == null ? "" : node.getName());
 		if (kind != NodeKind.START && kind != NodeKind.END) {
 			boolean composite = !node.getChildren().isEmpty() || kind != null && kind.isComposite();
-			String text = kind == NodeKind.CONDITION ? "C" : Captions.of(node);
+			String letter = STYLE.of(kind).letter();
+			String text = letter != null ? letter : Captions.of(node);
 			GLabelBuilder name = new GLabelBuilder(NAME).id(id + "#name").text(text);
 			// sized here, as the client would measure it: the client then has nothing to measure before it draws
 			if (composite) {
-				name.position(8, 6).size(TextWidth.of(text, COMPOSITE_NAME_SIZE, true), COMPOSITE_NAME_SIZE + 4);
+				NotationStyle.TextStyle header = STYLE.headerCaption();
+				name.position(header.x(), header.y() - header.size()).size(TextWidth.of(text, header.size(), header.bold()), header.size() + 4);
 			} else {
-				name.position(bounds.width() / 2, bounds.height() / 2).alignment(0.5, 0.5).size(TextWidth.of(text, NAME_SIZE, false), NAME_SIZE + 4);
+				NotationStyle.TextStyle font = letter != null ? STYLE.letterCaption() : STYLE.centredCaption();
+				name.position(bounds.width() / 2, bounds.height() / 2).alignment(0.5, 0.5).size(TextWidth.of(text, font.size(), font.bold()),
+						font.size() + 4);
 			}
 			shape.add(name.build());
 		}

@@ -71,7 +71,7 @@ class DiagramCommandTest {
 		}
 		for (Element start : groups(picture, "start")) {
 			Element disc = (Element) start.getElementsByTagName("circle").item(0);
-			assertEquals("black", disc.getAttribute("fill"), "START is a black disc");
+			assertEquals("#000000", disc.getAttribute("fill"), "START is a black disc");
 		}
 		for (Element end : groups(picture, "end")) {
 			assertEquals(2, end.getElementsByTagName("circle").getLength(), "END is a disc with a black centre");
