@@ -38,14 +38,17 @@ public final class ExpressionChecks {
 	}
 
 	public static List<Problem> check(String expression, MessageCatalog catalog) {
-		return check(expression, new MessageChecks(catalog, MessageCatalog.standardTopics()));
+		return check(expression, new MessageChecks(catalog, MessageCatalog.standardTopics()), null);
 	}
 
-	/** With the message checks the statechart validator keeps for a whole model. */
-	static List<Problem> check(String expression, MessageChecks messages) {
+	/**
+	 * With the message checks the statechart validator keeps for a whole model, and the parse
+	 * session of its run (null: parsed on its own).
+	 */
+	static List<Problem> check(String expression, MessageChecks messages, ExpressionParser.Session session) {
 		String text = expression == null ? "" : expression;
 		List<Problem> problems = new ArrayList<>();
-		ExpressionParser.Result parsed = ExpressionParser.parse(text);
+		ExpressionParser.Result parsed = session == null ? ExpressionParser.parse(text) : session.parse(text);
 		for (Issue issue : parsed.issues()) {
 			if (issue.getSeverity() == Severity.ERROR || issue.getSeverity() == Severity.WARNING) {
 				int line = issue.getLineNumber() == null ? 1 : issue.getLineNumber();

@@ -8,6 +8,7 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
 import org.eclipse.emf.ecore.util.Diagnostician;
+import org.kse.expression.ExpressionParser;
 import org.kse.messages.MessageCatalog;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.StatechartPackage;
@@ -29,6 +30,14 @@ public final class ModelValidation {
 	 * (the standard messages when null).
 	 */
 	public static Diagnostic validate(Model model, MessageCatalog catalog) {
+		return validate(model, catalog, ExpressionParser.session());
+	}
+
+	/**
+	 * As {@link #validate(Model, MessageCatalog)}, parsing the expressions with {@code expressions},
+	 * whose parses the caller then reuses (the generator plans its C++ from them).
+	 */
+	public static Diagnostic validate(Model model, MessageCatalog catalog, ExpressionParser.Session expressions) {
 		EValidator.Registry registry = new EValidatorRegistryImpl();
 		registry.put(StatechartPackage.eINSTANCE, new StatechartValidator());
 		Diagnostician diagnostician = new Diagnostician(registry) {
@@ -42,6 +51,7 @@ public final class ModelValidation {
 		if (catalog != null) {
 			context.put(StatechartValidator.CATALOG, catalog);
 		}
+		context.put(StatechartValidator.EXPRESSIONS, expressions);
 		diagnostician.validate(model, result, context);
 		return result;
 	}

@@ -14,6 +14,7 @@ import org.eclipse.emf.ecore.EDataType;
 import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.InternalEObject;
 import org.eclipse.xtext.validation.Issue;
+import org.kse.expression.ExpressionParser;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.StandardMessages;
 import org.kse.model.NodeKind;
@@ -59,6 +60,11 @@ public class StatechartValidator implements EValidator {
 	public static final Object CATALOG = MessageCatalog.class;
 	/** Context key: the list of known topics (the standard Monas topics when absent). */
 	public static final Object TOPICS = "org.kse.validation.topics";
+	/**
+	 * Context key: the {@link ExpressionParser.Session} that parses the transition expressions, so
+	 * that whoever validates can reuse its parses (the generator does); one per validation when absent.
+	 */
+	public static final Object EXPRESSIONS = ExpressionParser.Session.class;
 
 	private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z_]\\w*");
 	private static final Pattern MESSAGE_TYPE = Pattern.compile("[A-Za-z_]\\w*\\.(Signal|State|Data)\\.[A-Za-z_]\\w*");
@@ -182,7 +188,7 @@ public class StatechartValidator implements EValidator {
 				warning(diagnostics, SAME_PARENT, transition, "source and target should be in the same composite state");
 			}
 		}
-		for (ExpressionChecks.Problem problem : ExpressionChecks.check(transition.getTE(), messageChecks(context))) {
+		for (ExpressionChecks.Problem problem : ExpressionChecks.check(transition.getTE(), messageChecks(context), expressions(context))) {
 			String message = "expression " + problem.line() + ":" + problem.column() + ": " + problem.message();
 			if (problem.kind() == ExpressionChecks.Kind.SYNTAX) {
 				diagnostics.add(new BasicDiagnostic(problem.error() ? Diagnostic.ERROR : Diagnostic.WARNING, DIAGNOSTIC_SOURCE, EXPRESSION,
@@ -191,6 +197,10 @@ public class StatechartValidator implements EValidator {
 				error(diagnostics, problem.kind() == ExpressionChecks.Kind.UNSUPPORTED ? EVENT : MESSAGE, transition, message);
 			}
 		}
+	}
+
+	private static ExpressionParser.Session expressions(Map<Object, Object> context) {
+		return context == null ? null : (ExpressionParser.Session) context.computeIfAbsent(EXPRESSIONS, key -> ExpressionParser.session());
 	}
 
 	@SuppressWarnings("unchecked")

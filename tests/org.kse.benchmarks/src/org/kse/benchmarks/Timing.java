@@ -1,5 +1,7 @@
 package org.kse.benchmarks;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -13,6 +15,25 @@ final class Timing {
 	/** Milliseconds: the median of {@code runs} runs after {@code warmups} unmeasured ones. */
 	static double median(int warmups, int runs, Callable<?> work) throws Exception {
 		return percentile(sample(warmups, runs, work), 50);
+	}
+
+	/**
+	 * Milliseconds of the calling thread's CPU time, the median of {@code runs} runs after
+	 * {@code warmups}: on a busy machine, wall time also counts other processes and a slow disk.
+	 */
+	static double cpuMedian(int warmups, int runs, Callable<?> work) throws Exception {
+		ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+		for (int i = 0; i < warmups; i++) {
+			work.call();
+		}
+		double[] times = new double[runs];
+		for (int i = 0; i < runs; i++) {
+			long start = threads.getCurrentThreadCpuTime();
+			work.call();
+			times[i] = (threads.getCurrentThreadCpuTime() - start) / 1e6;
+		}
+		Arrays.sort(times);
+		return percentile(times, 50);
 	}
 
 	/** Milliseconds of {@code runs} runs after {@code warmups} unmeasured ones, sorted. */

@@ -48,7 +48,7 @@ public final class GenerationPlan {
 	private final MessageCatalog catalog;
 	private final TreeMessages tree;
 
-	private GenerationPlan(Model model, MessageCatalog catalog, TreeMessages tree) {
+	private GenerationPlan(Model model, MessageCatalog catalog, TreeMessages tree, ExpressionParser.Session expressions) {
 		this.catalog = catalog;
 		this.tree = tree;
 		this.modelName = model.getName() == null ? model.getNodes().get(0).getName() : model.getName();
@@ -68,7 +68,7 @@ public final class GenerationPlan {
 		Set<String> classes = new HashSet<>();
 		for (Transition transition : model.getTransitions()) {
 			String te = transition.getTE();
-			ExpressionParser.Result parsed = ExpressionParser.parse(te);
+			ExpressionParser.Result parsed = expressions.parse(te);
 			TransitionExpression expression = parsed.expression();
 			Condition condition = expression == null ? null : expression.getCondition();
 			List<Action> actions = expression == null || expression.getActions().isEmpty() ? null : List.copyOf(expression.getActions());
@@ -129,11 +129,20 @@ public final class GenerationPlan {
 	}
 
 	public static GenerationPlan of(Model model) {
-		return new GenerationPlan(model, StandardMessages.catalog(), TreeMessages.NONE);
+		return of(model, StandardMessages.catalog(), TreeMessages.NONE);
 	}
 
 	public static GenerationPlan of(Model model, MessageCatalog catalog, TreeMessages tree) {
-		return new GenerationPlan(model, catalog, tree);
+		return of(model, catalog, tree, ExpressionParser.session());
+	}
+
+	/**
+	 * With the session the model was validated with, so that each expression is parsed once
+	 * per run; the conditions and actions planned are that session's, shared by the
+	 * transitions of one text (the templates only read them).
+	 */
+	public static GenerationPlan of(Model model, MessageCatalog catalog, TreeMessages tree, ExpressionParser.Session expressions) {
+		return new GenerationPlan(model, catalog, tree, expressions);
 	}
 
 	/** The source tree's own .proto files, as the generated CMake builds them. */

@@ -21,6 +21,7 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 import org.eclipse.emf.common.util.Diagnostic;
+import org.kse.expression.ExpressionParser;
 import org.kse.messages.MessageCatalog;
 import org.kse.messages.ProtoProblem;
 import org.kse.messages.StandardMessages;
@@ -103,8 +104,10 @@ public final class MonasGenerator {
 		messageFolders.add(root.resolve(MESSAGES_FOLDER));
 		StandardMessages.Merged messages = StandardMessages.merge(messageFolders);
 		MessageCatalog catalog = messages.catalog();
+		// One parse of each expression for the whole run: the validation's, reused by the plan and the runtime check.
+		ExpressionParser.Session expressions = ExpressionParser.session();
 		List<String> errors = new ArrayList<>();
-		for (Diagnostic diagnostic : ModelValidation.validate(model, catalog).getChildren()) {
+		for (Diagnostic diagnostic : ModelValidation.validate(model, catalog, expressions).getChildren()) {
 			if (diagnostic.getSeverity() == Diagnostic.ERROR) {
 				errors.add(diagnostic.getMessage());
 			}
@@ -113,7 +116,7 @@ public final class MonasGenerator {
 			throw new ModelHasErrorsException(errors);
 		}
 		progress.step(2, 3, "planning the C++ of " + model.getName());
-		GenerationPlan plan = GenerationPlan.of(model, catalog, TreeMessages.of(root.resolve(MESSAGES_FOLDER), messages.replacements()));
+		GenerationPlan plan = GenerationPlan.of(model, catalog, TreeMessages.of(root.resolve(MESSAGES_FOLDER), messages.replacements()), expressions);
 		if (!plan.problems().isEmpty()) {
 			throw new ModelHasErrorsException(plan.problems());
 		}
@@ -132,9 +135,14 @@ public final class MonasGenerator {
 				owned.put(chart.resolve("transitions").resolve(transition.actionClass() + ".h"), MonasTemplates.action(plan, transition));
 			}
 		}
+		// null for an activity the user already has: it is never written, so it is not rendered either.
 		Map<String, Map<String, String>> newActivities = new LinkedHashMap<>();
 		for (Map.Entry<String, Node> activity : plan.activities().entrySet()) {
 			String name = activity.getKey();
+			if (usersActivity(root, Path.of("activities", name))) {
+				newActivities.put(name, null);
+				continue;
+			}
 			var inputs = activity.getValue().getVariables().stream().filter(v -> v.getType() != null && v.getType().split("\\.").length == 3).toList();
 			Map<String, String> files = new LinkedHashMap<>();
 			files.put(name + ".h", MonasTemplates.activityHeader(plan, name, inputs));
@@ -156,13 +164,13 @@ public final class MonasGenerator {
 		removeAbandonedStaging(root);
 		for (Map.Entry<String, Map<String, String>> activity : newActivities.entrySet()) {
 			Path folder = Path.of("activities", activity.getKey());
-			if (createActivity(root, folder, activity.getValue())) {
+			if (activity.getValue() != null && createActivity(root, folder, activity.getValue())) {
 				activity.getValue().keySet().forEach(file -> written.add(folder.resolve(file)));
 			} else {
 				kept.add(folder);
 			}
 		}
-		return new Report(written, unchanged, kept, removed, messages.replacements(), runtimeMismatches(model, messageFolders, messages),
+		return new Report(written, unchanged, kept, removed, messages.replacements(), runtimeMismatches(model, messageFolders, messages, expressions),
 				messages.problems());
 	}
 
@@ -178,7 +186,7 @@ public final class MonasGenerator {
 		Path folder = inside(root, relative);
 		Path staging = inside(root, relative.resolveSibling(STAGING + relative.getFileName()));
 		if (Files.exists(folder, LinkOption.NOFOLLOW_LINKS)) {
-			if (!onlyInterruptedWrites(folder)) {
+			if (usersActivity(root, relative)) {
 				return false;
 			}
 			// Left by a generator before activities were staged, killed before it wrote a file.
@@ -195,6 +203,12 @@ public final class MonasGenerator {
 			Files.move(staging, folder);
 		}
 		return true;
+	}
+
+	/** An activity folder that exists with more in it than a killed run's temporary files: the user's. */
+	private static boolean usersActivity(Path root, Path relative) throws IOException {
+		Path folder = inside(root, relative);
+		return Files.exists(folder, LinkOption.NOFOLLOW_LINKS) && !onlyInterruptedWrites(folder);
 	}
 
 	/** Activities a killed run was assembling. */
@@ -258,7 +272,8 @@ public final class MonasGenerator {
 	 * runtime's, which the generated C++ is compiled with (see {@link TreeMessages}): that C++
 	 * would not compile, and saying so now beats a compiler error about protobuf accessors.
 	 */
-	private static List<String> runtimeMismatches(Model model, List<Path> folders, StandardMessages.Merged messages) {
+	private static List<String> runtimeMismatches(Model model, List<Path> folders, StandardMessages.Merged messages,
+			ExpressionParser.Session expressions) {
 		if (messages.replacements().isEmpty()) {
 			return List.of();
 		}
@@ -266,7 +281,7 @@ public final class MonasGenerator {
 		messages.replacements().forEach(replacement -> replacing.add(replacement.file().toAbsolutePath().normalize()));
 		MessageCatalog runtime = StandardMessages.merge(folders, replacing).catalog();
 		List<String> warnings = new ArrayList<>();
-		for (Diagnostic diagnostic : ModelValidation.validate(model, runtime).getChildren()) {
+		for (Diagnostic diagnostic : ModelValidation.validate(model, runtime, expressions).getChildren()) {
 			if (diagnostic.getSeverity() == Diagnostic.ERROR) {
 				Matcher parts = DIAGNOSTIC.matcher(diagnostic.getMessage());
 				warnings.add(parts.matches() ? parts.group(1) + (parts.group(2) == null ? "" : parts.group(2)) + "the generated C++ will not compile: "

@@ -40,18 +40,58 @@ public final class TextParsing {
 	 * @param tooDeep the message for input nested beyond what the parser's stack can take
 	 */
 	public static Parsed parse(Injector injector, URI uri, String text, String tooDeep) {
-		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
+		return parse(injector.getInstance(XtextResourceSet.class), injector.getInstance(IResourceValidator.class), uri, text, tooDeep);
+	}
+
+	private static Parsed parse(XtextResourceSet resourceSet, IResourceValidator validator, URI uri, String text, String tooDeep) {
 		XtextResource resource = (XtextResource) resourceSet.createResource(uri);
 		try {
 			resource.load(new ByteArrayInputStream(terminated(text).getBytes(StandardCharsets.UTF_8)),
 					Map.of(XtextResource.OPTION_ENCODING, "UTF-8"));
 			List<Issue> issues = new ArrayList<>();
-			for (Issue issue : injector.getInstance(IResourceValidator.class).validate(resource, CheckMode.ALL, CancelIndicator.NullImpl)) {
+			for (Issue issue : validator.validate(resource, CheckMode.ALL, CancelIndicator.NullImpl)) {
 				issues.add(withinText(issue, text.length()));
 			}
 			return new Parsed(resource.getContents().isEmpty() ? null : resource.getContents().get(0), issues);
 		} catch (IOException | RuntimeException | StackOverflowError e) {
 			return new Parsed(null, List.of(error(causedByStackOverflow(e) ? tooDeep : "cannot read the text: " + e.getMessage())));
+		}
+	}
+
+	/**
+	 * Parses many texts of one language with one resource set and one validator: for a run that
+	 * reads hundreds of short texts (a model's transition expressions), getting both from Guice
+	 * for each text costs more than parsing it. Each text's resource leaves the set as soon as it
+	 * is validated, so the set does not grow with the texts; what was parsed stays readable, node
+	 * model included, as long as the language has no cross-references left to resolve.
+	 * <p>
+	 * A resource set is not thread-safe, so neither is this: one per run, used by one thread at a
+	 * time (a validation, a generation), never a shared singleton.
+	 */
+	public static final class Parser {
+		private final XtextResourceSet resourceSet;
+		private final IResourceValidator validator;
+		private final URI uri;
+		private final String tooDeep;
+
+		/**
+		 * @param uri the URI every text is parsed under (issues name it), one text at a time
+		 * @param tooDeep as for {@link TextParsing#parse(Injector, URI, String, String)}
+		 */
+		public Parser(Injector injector, URI uri, String tooDeep) {
+			this.resourceSet = injector.getInstance(XtextResourceSet.class);
+			this.validator = injector.getInstance(IResourceValidator.class);
+			this.uri = uri;
+			this.tooDeep = tooDeep;
+		}
+
+		/** As {@link TextParsing#parse(Injector, URI, String, String)}, with this parser's resource set and validator. */
+		public Parsed parse(String text) {
+			try {
+				return TextParsing.parse(resourceSet, validator, uri, text, tooDeep);
+			} finally {
+				resourceSet.getResources().clear();
+			}
 		}
 	}
 

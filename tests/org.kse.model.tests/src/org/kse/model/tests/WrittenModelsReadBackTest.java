@@ -77,7 +77,7 @@ class WrittenModelsReadBackTest {
 		}
 	}
 
-	private static Model randomModel(Random random) {
+	static Model randomModel(Random random) {
 		StatechartFactory factory = StatechartFactory.eINSTANCE;
 		Model model = factory.createModel();
 		model.setName(text(random));

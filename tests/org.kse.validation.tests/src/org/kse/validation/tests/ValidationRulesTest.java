@@ -23,12 +23,15 @@ import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.kse.expression.ExpressionParser;
+import org.kse.messages.StandardMessages;
 import org.kse.testing.Models;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.Transition;
 import org.kse.model.statechart.Variable;
+import org.kse.validation.ExpressionChecks;
 import org.kse.validation.Labels;
 import org.kse.validation.ModelValidation;
 import org.kse.validation.StatechartValidator;
@@ -218,6 +221,34 @@ class ValidationRulesTest {
 				StatechartValidator.EXPRESSION, StatechartValidator.VARIABLE_NAME), diagnostics.stream().map(Diagnostic::getCode).toList(),
 				Models.render(ModelValidation.validate(model)));
 		assertSame(root, diagnostics.get(0).getData().get(0));
+	}
+
+	/**
+	 * A validation parses each expression text once and hands the parse to every transition
+	 * with that text: each of them still gets its own diagnostics, at the same positions, as
+	 * when its expression is checked alone.
+	 */
+	@Test
+	void transitionsSharingAnExpressionEachGetItsDiagnostics() {
+		Model model = Models.simple();
+		Node work = Models.byName(model, "Work");
+		Node end = Models.byName(model, "0.3");
+		String broken = "[a.Stat.B==1 &&\n wordstate.State.GameStateMessage==NULL]";
+		String warned = "[a==1 && TimeoutCheck(behavior)]";
+		List<Transition> transitions = List.of(transition(model, work, end, broken), transition(model, work, end, warned),
+				transition(model, work, end, broken), transition(model, work, end, warned));
+		ExpressionParser.Session session = ExpressionParser.session();
+		List<Diagnostic> diagnostics = ModelValidation.validate(model, null, session).getChildren();
+		assertEquals(3, session.parsed(), "each text parsed once: the simple model's own, and the two shared ones");
+		for (Transition transition : transitions) {
+			List<String> expected = ExpressionChecks.check(transition.getTE(), StandardMessages.catalog()).stream()
+					.map(problem -> Labels.describe(transition) + ": expression " + problem.line() + ":" + problem.column() + ": " + problem.message())
+					.toList();
+			List<Diagnostic> own = diagnostics.stream().filter(d -> d.getData().get(0) == transition).toList();
+			assertEquals(expected, own.stream().map(Diagnostic::getMessage).toList(), Models.render(ModelValidation.validate(model)));
+			assertFalse(expected.isEmpty());
+		}
+		assertEquals(Models.render(ModelValidation.validate(model)), Models.render(ModelValidation.validate(model, null, ExpressionParser.session())));
 	}
 
 	@Test

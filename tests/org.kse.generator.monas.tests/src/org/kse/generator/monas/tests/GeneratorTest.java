@@ -2,6 +2,7 @@ package org.kse.generator.monas.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -18,14 +19,20 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kse.expression.ExpressionParser;
+import org.kse.generator.monas.GenerationPlan;
 import org.kse.generator.monas.MonasGenerator;
 import org.kse.generator.monas.MonasGenerator.ModelHasErrorsException;
 import org.kse.generator.monas.MonasGenerator.Options;
 import org.kse.generator.monas.MonasGenerator.Report;
+import org.kse.generator.monas.TreeMessages;
+import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
 import org.kse.model.statechart.StatechartFactory;
+import org.kse.model.statechart.Transition;
+import org.kse.validation.ModelValidation;
 
 /**
  * The generator's promises: golden output for a model with every node and action kind,
@@ -199,6 +206,30 @@ class GeneratorTest {
 		for (Path file : files) {
 			assertEquals(past, Files.getLastModifiedTime(file), file.toString());
 		}
+	}
+
+	/**
+	 * A generation parses each expression once: the plan takes the parses of the validation
+	 * before it, and transitions with one text share one parse.
+	 */
+	@Test
+	void thePlanUsesTheValidationsParses() throws Exception {
+		Path legacy = Path.of(System.getProperty("kse.repository", "../.."), "tests", "data", "legacy-kse");
+		Model goalie = StatechartResources.load(legacy.resolve("Goalie/Goalie.stct"));
+		ExpressionParser.Session session = ExpressionParser.session();
+		ModelValidation.validate(goalie, StandardMessages.catalog(), session);
+		int parsed = session.parsed();
+		long texts = goalie.getTransitions().stream().map(Transition::getTE).filter(te -> te != null && !te.isBlank()).distinct().count();
+		assertEquals(texts, parsed, "each text parsed once by the validation");
+		GenerationPlan plan = GenerationPlan.of(goalie, StandardMessages.catalog(), TreeMessages.NONE, session);
+		assertEquals(parsed, session.parsed(), "nothing parsed again by the plan");
+		int withCondition = 0;
+		for (GenerationPlan.PlannedTransition transition : plan.transitions()) {
+			ExpressionParser.Result result = session.parse(transition.expression());
+			assertSame(result.expression() == null ? null : result.expression().getCondition(), transition.condition(), transition.expression());
+			withCondition += transition.condition() == null ? 0 : 1;
+		}
+		assertTrue(withCondition > 10, "the Goalie's guards are planned: " + withCondition);
 	}
 
 	@Test
