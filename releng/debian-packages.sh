@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the C++ side builds on and the tests run with (GTK, WebKitGTK for
+# Installs the Debian packages the C++ side builds on and the tests run with (Boost.Statechart and
+# Qt SCXML for the engine's comparison benchmark, GTK, WebKitGTK for
 # the help window and the diagram, Xvfb, ImageMagick for screenshots, Chromium for the diagram's
 # end-to-end tests), when missing (as root, or through sudo). Used by test.sh and `kse demo`.
 set -euo pipefail
 packages="g++ cmake ninja-build libprotobuf-dev protobuf-compiler libgtest-dev libgmock-dev libbenchmark-dev
+  libboost-dev qt6-scxml-dev
   xvfb xauth x11-utils libgtk-3-0 libwebkit2gtk-4.1-0 imagemagick unzip chromium"
 missing=""
 for package in $packages; do

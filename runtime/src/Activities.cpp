@@ -27,7 +27,9 @@ void EngineCore::Launch(BasicState* state) {
   if (!state->activity_) {
     return;
   }
-  state->launches_.fetch_add(1, std::memory_order_relaxed);
+  // Only a step (under the engine's lock) launches: a plain increment, no locked instruction.
+  state->launches_.store(state->launches_.load(std::memory_order_relaxed) + 1,
+                         std::memory_order_relaxed);
   if (!pool_) {
     RunActivity(state);
     UnwindIfGivenUp();
@@ -53,23 +55,22 @@ void EngineCore::Launch(BasicState* state) {
 }
 
 void EngineCore::RunActivity(BasicState* state) {
-  IActivity* activity = state->activity_.get();
-  const char* failure = nullptr;
-  std::string message;
+  // Nothing but the call on the way that does not throw: the failure is told out of line.
   try {
     WatchedCall watched(SlotOf(state), CallKind::Activity, state);
-    activity->Execute();
-    return;
+    state->activity_->Execute();
   } catch (const std::exception& e) {
-    failure = "threw";
-    message = e.what();
+    ActivityFailed(state, "threw", e.what());
   } catch (...) {
-    failure = "threw a non-standard exception";
+    ActivityFailed(state, "threw a non-standard exception", "");
   }
+}
+
+void EngineCore::ActivityFailed(BasicState* state, const char* failure, const std::string& message) {
   ++activity_failures_;
   std::string name;
   try {
-    name = activity->GetName();
+    name = state->activity_->GetName();
   } catch (...) {
     name = "?";
   }
@@ -119,7 +120,7 @@ bool EngineCore::TakeWake() {
 }
 
 bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   while (StepRoot()) {
     if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
       Report(EngineReport::Kind::Warning, "RunUntilStable stopped after " +
@@ -322,7 +323,7 @@ void EngineCore::Loop(std::uint64_t generation) {
     std::optional<kse::messaging::TimePoint> wakeup;
     try {
       if (TakeWake()) {
-        std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+        std::lock_guard<EngineLock> lock(engine_lock_);
         std::size_t steps = 0;
         bool more = false;
         while (!Retired(generation) && StepRoot()) {
@@ -360,7 +361,7 @@ void EngineCore::Loop(std::uint64_t generation) {
 }
 
 std::vector<std::string> EngineCore::ActiveStates() const {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   std::vector<std::string> names;
   for (const State* state : states_) {
     if (state->IsActive()) {
@@ -371,7 +372,7 @@ std::vector<std::string> EngineCore::ActiveStates() const {
 }
 
 void EngineCore::SetObserver(Statechart::Observer observer) {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   observer_ = std::move(observer);
 }
 

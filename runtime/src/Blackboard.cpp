@@ -1,12 +1,37 @@
 #include "kse/messaging/Blackboard.h"
 
+#include <deque>
+#include <map>
+#include <set>
 #include <utility>
 
 namespace kse::messaging {
 
+struct Blackboard::Contents {
+  std::set<std::string> topics;
+  std::map<std::string, Entry> states;
+  std::map<std::string, std::deque<MessagePtr>> signals;
+  std::map<std::string, std::deque<Entry>> data;
+  // The inbox: what arrived since the last ProcessMessages(), bounded as the visible part is
+  // (a State message replaces the one waiting before it).
+  std::map<std::string, Entry> inbox_states;
+  std::map<std::string, std::deque<MessagePtr>> inbox_signals;
+  std::map<std::string, std::deque<Entry>> inbox_data;
+  std::size_t inbox_size = 0;
+  std::multiset<TimePoint> wakeups;
+};
+
 Blackboard::Blackboard(MessageHub& hub, std::string name) : hub_(hub), name_(std::move(name)) {}
 
-Blackboard::~Blackboard() { hub_.Detach(this); }
+Blackboard::~Blackboard() {
+  // Only a subscription puts a blackboard into the hub.
+  if (contents_ && !contents_->topics.empty()) hub_.Detach(this);
+}
+
+Blackboard::Contents& Blackboard::Made() {
+  if (!contents_) contents_ = std::make_unique<Contents>();
+  return *contents_;
+}
 
 std::string Blackboard::Key(const std::string& topic, const std::string& type_name) {
   std::string key;
@@ -19,7 +44,7 @@ std::string Blackboard::Key(const std::string& topic, const std::string& type_na
 void Blackboard::Subscribe(const std::string& topic) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!topics_.insert(topic).second) {
+    if (!Made().topics.insert(topic).second) {
       return;
     }
   }
@@ -29,7 +54,7 @@ void Blackboard::Subscribe(const std::string& topic) {
 
 bool Blackboard::IsSubscribed(const std::string& topic) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return topics_.count(topic) != 0;
+  return contents_ && contents_->topics.count(topic) != 0;
 }
 
 void Blackboard::Deliver(const std::string& topic, Kind kind, const MessagePtr& message,
@@ -40,43 +65,45 @@ void Blackboard::Deliver(const std::string& topic, Kind kind, const MessagePtr& 
 }
 
 void Blackboard::Queue(std::string key, Kind kind, const MessagePtr& message, TimePoint time) {
+  Contents& c = Made();
   switch (kind) {
     case Kind::State: {
-      auto [it, added] = inbox_states_.insert_or_assign(std::move(key), Entry{message, time});
+      auto [it, added] = c.inbox_states.insert_or_assign(std::move(key), Entry{message, time});
       (void)it;
-      inbox_size_ += added ? 1 : 0;
+      c.inbox_size += added ? 1 : 0;
       break;
     }
     case Kind::Signal: {
-      auto& queue = inbox_signals_[std::move(key)];
+      auto& queue = c.inbox_signals[std::move(key)];
       if (queue.size() >= kSignalQueueLimit) {
         queue.pop_front();
-        --inbox_size_;
+        --c.inbox_size;
       }
       queue.push_back(message);
-      ++inbox_size_;
+      ++c.inbox_size;
       break;
     }
     case Kind::Data: {
-      auto& history = inbox_data_[std::move(key)];
+      auto& history = c.inbox_data[std::move(key)];
       if (history.size() >= kDataHistoryLimit) {
         history.pop_front();
-        --inbox_size_;
+        --c.inbox_size;
       }
       history.push_back(Entry{message, time});
-      ++inbox_size_;
+      ++c.inbox_size;
       break;
     }
   }
 }
 
 void Blackboard::Apply(std::string key, Kind kind, const MessagePtr& message, TimePoint time) {
+  Contents& c = Made();
   switch (kind) {
     case Kind::State:
-      states_[std::move(key)] = Entry{message, time};
+      c.states[std::move(key)] = Entry{message, time};
       break;
     case Kind::Signal: {
-      auto& queue = signals_[std::move(key)];
+      auto& queue = c.signals[std::move(key)];
       if (queue.size() >= kSignalQueueLimit) {
         queue.pop_front();
       }
@@ -84,7 +111,7 @@ void Blackboard::Apply(std::string key, Kind kind, const MessagePtr& message, Ti
       break;
     }
     case Kind::Data: {
-      auto& history = data_[std::move(key)];
+      auto& history = c.data[std::move(key)];
       if (history.size() >= kDataHistoryLimit) {
         history.pop_front();
       }
@@ -96,47 +123,50 @@ void Blackboard::Apply(std::string key, Kind kind, const MessagePtr& message, Ti
 
 void Blackboard::ProcessMessages() {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (inbox_size_ == 0) {
+  if (!contents_ || contents_->inbox_size == 0) {
     return;
   }
-  for (auto& [key, entry] : inbox_states_) {
-    states_[key] = std::move(entry);
+  Contents& c = *contents_;
+  for (auto& [key, entry] : c.inbox_states) {
+    c.states[key] = std::move(entry);
   }
-  for (auto& [key, queue] : inbox_signals_) {
+  for (auto& [key, queue] : c.inbox_signals) {
     for (auto& message : queue) {
       Apply(key, Kind::Signal, message, TimePoint());
     }
   }
-  for (auto& [key, history] : inbox_data_) {
+  for (auto& [key, history] : c.inbox_data) {
     for (auto& entry : history) {
       Apply(key, Kind::Data, entry.message, entry.time);
     }
   }
-  inbox_states_.clear();
-  inbox_signals_.clear();
-  inbox_data_.clear();
-  inbox_size_ = 0;
+  c.inbox_states.clear();
+  c.inbox_signals.clear();
+  c.inbox_data.clear();
+  c.inbox_size = 0;
 }
 
 std::size_t Blackboard::PendingMessages() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return inbox_size_;
+  return contents_ ? contents_->inbox_size : 0;
 }
 
 Blackboard::MessagePtr Blackboard::ReadStateMessage(const std::string& topic,
                                                     const std::string& type_name) const {
   const std::string key = Key(topic, type_name);
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = states_.find(key);
-  return it == states_.end() ? nullptr : it->second.message;
+  if (!contents_) return nullptr;
+  auto it = contents_->states.find(key);
+  return it == contents_->states.end() ? nullptr : it->second.message;
 }
 
 Blackboard::MessagePtr Blackboard::ReadSignalMessage(const std::string& topic,
                                                      const std::string& type_name) {
   const std::string key = Key(topic, type_name);
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = signals_.find(key);
-  if (it == signals_.end() || it->second.empty()) {
+  if (!contents_) return nullptr;
+  auto it = contents_->signals.find(key);
+  if (it == contents_->signals.end() || it->second.empty()) {
     return nullptr;
   }
   MessagePtr message = std::move(it->second.front());
@@ -148,8 +178,9 @@ Blackboard::MessagePtr Blackboard::ReadDataMessage(const std::string& topic,
                                                    const std::string& type_name) const {
   const std::string key = Key(topic, type_name);
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = data_.find(key);
-  if (it == data_.end() || it->second.empty()) {
+  if (!contents_) return nullptr;
+  auto it = contents_->data.find(key);
+  if (it == contents_->data.end() || it->second.empty()) {
     return nullptr;
   }
   return it->second.back().message;
@@ -160,8 +191,9 @@ std::vector<Stamped<google::protobuf::Message>> Blackboard::ReadDataHistoryMessa
   const std::string key = Key(topic, type_name);
   std::vector<Stamped<google::protobuf::Message>> out;
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = data_.find(key);
-  if (it == data_.end()) {
+  if (!contents_) return out;
+  auto it = contents_->data.find(key);
+  if (it == contents_->data.end()) {
     return out;
   }
   for (const Entry& entry : it->second) {
@@ -176,8 +208,9 @@ std::size_t Blackboard::PendingSignals(const std::string& topic,
                                        const std::string& type_name) const {
   const std::string key = Key(topic, type_name);
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = signals_.find(key);
-  return it == signals_.end() ? 0 : it->second.size();
+  if (!contents_) return 0;
+  auto it = contents_->signals.find(key);
+  return it == contents_->signals.end() ? 0 : it->second.size();
 }
 
 void Blackboard::PublishMessage(const std::string& topic, Kind kind, MessagePtr message) {
@@ -201,24 +234,26 @@ void Blackboard::PublishCopy(const std::string& topic, Kind kind,
 
 void Blackboard::ScheduleWakeup(TimePoint time) {
   std::lock_guard<std::mutex> lock(mutex_);
-  wakeups_.insert(time);
+  Made().wakeups.insert(time);
 }
 
 std::optional<TimePoint> Blackboard::NextWakeup() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (wakeups_.empty()) {
+  if (!contents_ || contents_->wakeups.empty()) {
     return std::nullopt;
   }
-  return *wakeups_.begin();
+  return *contents_->wakeups.begin();
 }
 
 bool Blackboard::TakeDueWakeups(TimePoint now) {
   std::lock_guard<std::mutex> lock(mutex_);
-  auto end = wakeups_.upper_bound(now);
-  if (end == wakeups_.begin()) {
+  if (!contents_) return false;
+  auto& wakeups = contents_->wakeups;
+  auto end = wakeups.upper_bound(now);
+  if (end == wakeups.begin()) {
     return false;
   }
-  wakeups_.erase(wakeups_.begin(), end);
+  wakeups.erase(wakeups.begin(), end);
   return true;
 }
 

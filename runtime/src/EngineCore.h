@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "EngineLock.h"
 #include "Watchdog.h"
 #include "WorkerPool.h"
 #include "kse/messaging/Blackboard.h"
@@ -92,12 +93,15 @@ class EngineCore {
   void Prepare();
   void CollectStates(State* state, std::vector<State*>& out) const;
   void CheckStructure() const;
-  void ComputeTransition(TransitionSegmentBase& transition) const;
+  void ComputeTransition(TransitionSegmentBase& transition);
   void CallUserInits();
 
   // Stepping
   bool StepRoot();
   bool StepState(State* state);
+  bool StepAnd(State* state);
+  /// OR states walked down in a loop by StepState; deeper ones recurse.
+  static constexpr std::size_t kUnrolledDepth = 16;
   bool TryTransitions(State* state);
   bool EvalGuard(TransitionSegmentBase* transition);
   bool FindChain(State* connector, std::size_t depth);
@@ -107,12 +111,13 @@ class EngineCore {
   void Enter(State* state);
   void Complete(State* state);
   void EnterDefault(State* state);
-  void EnterAlong(const std::vector<State*>& path, std::size_t index);
+  void EnterAlong(State* const* path, std::size_t length, std::size_t index);
   void Exit(State* state);
 
   // Activities
   void Launch(BasicState* state);
   void RunActivity(BasicState* state);
+  void ActivityFailed(BasicState* state, const char* failure, const std::string& message);
   /// Called on a worker after the activity returned: true when it must run again (its state
   /// was entered again while it ran).
   bool FinishActivity(BasicState* state);
@@ -134,6 +139,8 @@ class EngineCore {
   }
   void UnwindIfThisThreadWasGivenUp() const;
 
+  bool UsesPool() const noexcept { return !options_.inline_activities && options_.worker_threads > 0; }
+
   // Watchdog
   /// An inline activity runs on the engine's thread: its slot, always in the cache.
   CallSlot& SlotOf(const BasicState* state) noexcept {
@@ -154,10 +161,11 @@ class EngineCore {
 
   // Guards the configuration (active flags, active children), the observer and Activate.
   // Workers never take it.
-  mutable std::recursive_mutex engine_mutex_;
+  mutable EngineLock engine_lock_;
   std::vector<State*> states_;                              // document order, after Prepare
   std::vector<kse::messaging::Blackboard*> blackboards_;    // root + regions
   std::vector<TransitionSegmentBase*> chain_;               // scratch for connector chains
+  std::vector<State*> entry_paths_;  // every transition's entry path, one after the other
   Statechart::Observer observer_;
   std::atomic<bool> activated_{false};
 
@@ -181,7 +189,7 @@ class EngineCore {
   mutable std::mutex reporter_mutex_;
   std::shared_ptr<const Reporter> reporter_;  // null: standard error
   CallSlot engine_slot_;  // guards, actions, entry/exit hooks, UserInit, the observer
-  std::unique_ptr<CallSlot[]> activity_slots_;  // by activity, for a worker pool
+  std::unique_ptr<CallSlot[]> activity_slots_;  // by activity, only for a worker pool
   std::unique_ptr<std::atomic<std::int64_t>[]> activity_limits_ms_;  // by activity, -1: the statechart's
   std::size_t activity_slot_count_ = 0;
   std::vector<const BasicState*> slot_states_;  // by slot

@@ -215,7 +215,9 @@ void EngineCore::Inspect(std::chrono::steady_clock::time_point now,
     report(std::move(overrun));
   };
   look(engine_slot_);
-  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) look(activity_slots_[slot]);
+  if (activity_slots_) {
+    for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) look(activity_slots_[slot]);
+  }
 }
 
 void EngineCore::UnwindIfThisThreadWasGivenUp() const {

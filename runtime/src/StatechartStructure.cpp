@@ -23,6 +23,33 @@ void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
   outgoing.swap(ordered);
 }
 
+// Whether a state's class overrides OnEntry()/OnExit(): generated states never do, and a call
+// of State's own (empty) hooks is skipped. G++ can name the function a virtual call would reach
+// (its bound member function extension); elsewhere every hook is called.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpmf-conversions"
+#pragma GCC diagnostic ignored "-Wpedantic"
+using Hook = void (*)(State*);
+Hook EntryOf(State* state) { return reinterpret_cast<Hook>(state->*(&State::OnEntry)); }
+Hook ExitOf(State* state) { return reinterpret_cast<Hook>(state->*(&State::OnExit)); }
+#pragma GCC diagnostic pop
+
+bool OverridesEntry(State* state) {
+  static StartState plain("", nullptr);  // State's own hooks
+  static const Hook none = EntryOf(&plain);
+  return EntryOf(state) != none;
+}
+bool OverridesExit(State* state) {
+  static StartState plain("", nullptr);
+  static const Hook none = ExitOf(&plain);
+  return ExitOf(state) != none;
+}
+#else
+bool OverridesEntry(State*) { return true; }
+bool OverridesExit(State*) { return true; }
+#endif
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -30,7 +57,7 @@ void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
 // ---------------------------------------------------------------------------------------------
 
 void EngineCore::AdoptState(std::unique_ptr<State> state) {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   if (IsActivated()) {
     throw std::logic_error("statechart '" + chart_.Name() + "': cannot add state '" +
                            state->Name() + "' after activation");
@@ -39,7 +66,7 @@ void EngineCore::AdoptState(std::unique_ptr<State> state) {
 }
 
 void EngineCore::AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition) {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   if (IsActivated()) {
     throw std::logic_error("statechart '" + chart_.Name() + "': cannot add transition '" +
                            transition->Name() + "' after activation");
@@ -55,7 +82,7 @@ std::vector<State*> EngineCore::States() const {
 }
 
 std::vector<TransitionSegmentBase*> EngineCore::Transitions() const {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   std::vector<TransitionSegmentBase*> out;
   out.reserve(owned_transitions_.size());
   for (const auto& transition : owned_transitions_) {
@@ -124,7 +151,7 @@ void EngineCore::CheckStructure() const {
   }
 }
 
-void EngineCore::ComputeTransition(TransitionSegmentBase& t) const {
+void EngineCore::ComputeTransition(TransitionSegmentBase& t) {
   auto fail = [this, &t](const std::string& why) {
     throw std::logic_error("statechart '" + chart_.Name() + "': transition '" + t.Name() + "' " +
                            why);
@@ -170,11 +197,13 @@ void EngineCore::ComputeTransition(TransitionSegmentBase& t) const {
   }
   t.exit_top_ = exit_top;
 
-  t.entry_path_.clear();
+  // Appended to entry_paths_; Prepare points the transition at it once every path is in.
+  const std::size_t first = entry_paths_.size();
   for (State* s = target; s != a; s = s->parent_) {
-    t.entry_path_.push_back(s);
+    entry_paths_.push_back(s);
   }
-  std::reverse(t.entry_path_.begin(), t.entry_path_.end());
+  std::reverse(entry_paths_.begin() + static_cast<std::ptrdiff_t>(first), entry_paths_.end());
+  t.entry_length_ = static_cast<std::uint32_t>(entry_paths_.size() - first);
 
   State* scope_owner = a;
   while (scope_owner->parent_ != nullptr &&
@@ -189,6 +218,7 @@ void EngineCore::ComputeTransition(TransitionSegmentBase& t) const {
 
 void EngineCore::Prepare() {
   states_.clear();
+  states_.reserve(owned_states_.size() + 1);  // the root and what it owns
   CollectStates(&chart_, states_);
   CheckStructure();
 
@@ -225,19 +255,36 @@ void EngineCore::Prepare() {
       }
     }
     OrderOutgoing(state->outgoing_);
+    state->calls_entry_ = OverridesEntry(state);
+    state->calls_exit_ = OverridesExit(state);
   }
+  entry_paths_.clear();
   for (const auto& transition : owned_transitions_) {
     ComputeTransition(*transition);
   }
+  entry_paths_.shrink_to_fit();
+  std::size_t next = 0;
+  for (const auto& transition : owned_transitions_) {
+    transition->entry_path_ = entry_paths_.data() + next;
+    next += transition->entry_length_;
+  }
+  // The structure is fixed from here on: no room kept for growth.
+  owned_states_.shrink_to_fit();
+  owned_transitions_.shrink_to_fit();
+  for (State* state : states_) state->children_.shrink_to_fit();
 
   // One watchdog slot per activity; its name is asked once, here, so that the watchdog never
   // calls user code.
   slot_states_.clear();
   activity_names_.clear();
+  const auto basics = static_cast<std::size_t>(std::count_if(
+      states_.begin(), states_.end(), [](const State* s) { return s->kind_ == StateKind::Basic; }));
+  slot_states_.reserve(basics);
+  activity_names_.reserve(basics);
   for (State* state : states_) {
     if (state->kind_ != StateKind::Basic) continue;
     auto* basic = static_cast<BasicState*>(state);
-    basic->watch_slot_ = slot_states_.size();
+    basic->watch_slot_ = static_cast<std::uint32_t>(slot_states_.size());
     slot_states_.push_back(basic);
     std::string name = "?";
     if (basic->activity_) {
@@ -249,7 +296,10 @@ void EngineCore::Prepare() {
     activity_names_.push_back(std::move(name));
   }
   activity_slot_count_ = slot_states_.size();
-  activity_slots_ = std::make_unique<CallSlot[]>(std::max<std::size_t>(1, activity_slot_count_));
+  // Inline activities are watched through the engine's own slot (SlotOf).
+  if (UsesPool() && activity_slot_count_ > 0) {
+    activity_slots_ = std::make_unique<CallSlot[]>(activity_slot_count_);
+  }
   activity_limits_ms_ =
       std::make_unique<std::atomic<std::int64_t>[]>(std::max<std::size_t>(1, activity_slot_count_));
   for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) activity_limits_ms_[slot] = -1;
@@ -305,13 +355,13 @@ void EngineCore::Activate() {
   if (IsActivated()) {
     return;  // without the lock: an engine thread stuck in a guard holds it
   }
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   if (IsActivated()) {
     return;
   }
   Prepare();
   ApplyActivityLimits();
-  if (!options_.inline_activities && options_.worker_threads > 0 && !pool_) {
+  if (UsesPool() && !pool_) {
     pool_ = std::make_unique<WorkerPool>(options_.worker_threads);
   }
   Watchdog::Instance().Watch(this);

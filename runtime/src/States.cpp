@@ -34,6 +34,9 @@ State::State(std::string name, State* parent, StateKind kind)
 
 State::~State() = default;
 
+void State::OnEntry() {}
+void State::OnExit() {}
+
 OrState::OrState(std::string name, State* parent) : State(std::move(name), parent, StateKind::Or) {}
 OrState::~OrState() = default;
 

@@ -1,6 +1,10 @@
 #include "EngineCore.h"
 
+#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
+#include <thread>
 
 namespace statechart_engine::detail {
 
@@ -11,11 +15,70 @@ constexpr std::size_t kMaxConnectorChain = 64;
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
+// The engine's lock, when it is taken
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+// Shared by every engine's lock: waiting for one is rare, and a waiter woken for another
+// statechart's lock only looks again.
+std::mutex& LockWaitMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+std::condition_variable& LockWaitSignal() {
+  static std::condition_variable signal;
+  return signal;
+}
+
+}  // namespace
+
+void EngineLock::LockSlow(std::uintptr_t self) noexcept {
+  for (unsigned attempt = 0;; ++attempt) {
+    std::uintptr_t queued = queued_.load(std::memory_order_relaxed);
+    if (queued == 0 && queued_.compare_exchange_strong(queued, self, std::memory_order_relaxed)) {
+      queued = self;
+    }
+    if (queued == self) {
+      std::uintptr_t expected = 0;
+      if (owner_.compare_exchange_strong(expected, self, std::memory_order_acquire,
+                                         std::memory_order_relaxed)) {
+        queued_.store(0, std::memory_order_relaxed);
+        return;
+      }
+    }
+    // A step is short: look again at once a few times, then sleep until the holder gives the
+    // lock back (a holder in a guard that hangs may keep it for seconds).
+    if (attempt < 64) {
+#if defined(__x86_64__) || defined(__i386__)
+      __builtin_ia32_pause();
+#endif
+      continue;
+    }
+    std::unique_lock<std::mutex> lock(LockWaitMutex());
+    if (owner_.load(std::memory_order_relaxed) != 0) {
+      LockWaitSignal().wait_for(lock, std::chrono::milliseconds(1));
+    } else {
+      lock.unlock();
+      std::this_thread::yield();  // free, but it goes to the queued thread first
+    }
+  }
+}
+
+void EngineLock::WakeWaiters() noexcept {
+  // Taken and dropped: a waiter between its look at owner_ and its wait holds it, so the signal
+  // cannot fall between the two.
+  { std::lock_guard<std::mutex> lock(LockWaitMutex()); }
+  LockWaitSignal().notify_all();
+}
+
+// ---------------------------------------------------------------------------------------------
 // Stepping
 // ---------------------------------------------------------------------------------------------
 
 bool EngineCore::Step() {
-  std::lock_guard<std::recursive_mutex> lock(engine_mutex_);
+  std::lock_guard<EngineLock> lock(engine_lock_);
   if (!IsActivated()) {
     Activate();
   }
@@ -23,7 +86,7 @@ bool EngineCore::Step() {
 }
 
 bool EngineCore::StepRoot() {
-  // Written only under engine_mutex_: a plain increment, no locked read-modify-write.
+  // Written only under engine_lock_: a plain increment, no locked read-modify-write.
   step_number_.store(step_number_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
   return StepState(&chart_);
 }
@@ -31,38 +94,53 @@ bool EngineCore::StepRoot() {
 // Monas' Step() of each kind of state. A region's running flag stops everything in the region;
 // the composite's own transitions come after its inside could not move, whatever is active in
 // it (not only its END).
+//
+// The OR states along the active path are walked down in a loop and their transitions tried on
+// the way back up (innermost first), which is what the recursion did, without a call per level.
 bool EngineCore::StepState(State* state) {
-  switch (state->kind_) {
-    case StateKind::Or: {
-      if (state->region_->IsRunning()) {
-        return false;
-      }
+  State* path[kUnrolledDepth];
+  std::size_t depth = 0;
+  for (;;) {
+    if (state->kind_ == StateKind::Or) {
+      if (state->region_->IsRunning()) break;  // nothing in a running region steps
       State* child = AsOr(state)->active_child_;
-      if (child != nullptr && StepState(child)) {
-        return true;
+      if (child != nullptr && depth < kUnrolledDepth) {
+        path[depth++] = state;
+        state = child;
+        continue;
       }
-      return TryTransitions(state);
+      if ((child != nullptr && StepState(child)) || TryTransitions(state)) return true;
+      break;
     }
-    case StateKind::And: {
-      // Whether a region was running is taken before the regions step, as Monas did.
-      bool running = false;
-      for (const State* region : state->children_) {
-        running = running || AsOr(region)->IsRunning();
-      }
-      bool fired = false;
-      for (State* region : state->children_) {
-        fired = StepState(region) || fired;
-      }
-      if (fired) {
-        return true;
-      }
-      return !running && TryTransitions(state);
+    if (state->kind_ == StateKind::And) {
+      if (StepAnd(state)) return true;
+      break;
     }
-    case StateKind::End:
-      return false;
-    default:
-      return TryTransitions(state);
+    if (state->kind_ != StateKind::End && TryTransitions(state)) return true;
+    break;
   }
+  // Back up: each OR state on the path tries its own once its inside could not move
+  // (TryTransitions looks at its region's running flag again, as the recursion did).
+  while (depth > 0) {
+    if (TryTransitions(path[--depth])) return true;
+  }
+  return false;
+}
+
+bool EngineCore::StepAnd(State* state) {
+  // Whether a region was running is taken before the regions step, as Monas did.
+  bool running = false;
+  for (const State* region : state->children_) {
+    running = running || AsOr(region)->IsRunning();
+  }
+  bool fired = false;
+  for (State* region : state->children_) {
+    fired = StepState(region) || fired;
+  }
+  if (fired) {
+    return true;
+  }
+  return !running && TryTransitions(state);
 }
 
 bool EngineCore::EvalGuard(TransitionSegmentBase* transition) {
@@ -148,7 +226,7 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
     }
     UnwindIfGivenUp();
   }
-  EnterAlong(transition->entry_path_, 0);
+  EnterAlong(transition->entry_path_, transition->entry_length_, 0);
   transitions_taken_.store(transitions_taken_.load(std::memory_order_relaxed) + 1,
                           std::memory_order_relaxed);
   if (observer_) {
@@ -176,6 +254,7 @@ void EngineCore::Enter(State* state) {
     AsOr(state->parent_)->active_child_ = state;
   }
   state->active_.store(true, std::memory_order_relaxed);
+  if (!state->calls_entry_) return;
   try {
     WatchedCall watched(engine_slot_, CallKind::Entry, state);
     state->OnEntry();
@@ -212,10 +291,10 @@ void EngineCore::EnterDefault(State* state) {
   Complete(state);
 }
 
-void EngineCore::EnterAlong(const std::vector<State*>& path, std::size_t index) {
+void EngineCore::EnterAlong(State* const* path, std::size_t length, std::size_t index) {
   State* state = path[index];
   Enter(state);
-  if (index + 1 == path.size()) {
+  if (index + 1 == length) {
     Complete(state);
     return;
   }
@@ -223,13 +302,13 @@ void EngineCore::EnterAlong(const std::vector<State*>& path, std::size_t index) 
   if (state->kind_ == StateKind::And) {
     for (State* region : state->children_) {
       if (region == next) {
-        EnterAlong(path, index + 1);
+        EnterAlong(path, length, index + 1);
       } else {
         EnterDefault(region);
       }
     }
   } else {
-    EnterAlong(path, index + 1);
+    EnterAlong(path, length, index + 1);
   }
 }
 
@@ -245,17 +324,19 @@ void EngineCore::Exit(State* state) {
       }
     }
   }
-  try {
-    WatchedCall watched(engine_slot_, CallKind::Exit, state);
-    state->OnExit();
-  } catch (const std::exception& e) {
-    ++action_failures_;
-    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw: " + e.what());
-  } catch (...) {
-    ++action_failures_;
-    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw");
+  if (state->calls_exit_) {
+    try {
+      WatchedCall watched(engine_slot_, CallKind::Exit, state);
+      state->OnExit();
+    } catch (const std::exception& e) {
+      ++action_failures_;
+      Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw: " + e.what());
+    } catch (...) {
+      ++action_failures_;
+      Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw");
+    }
+    UnwindIfGivenUp();
   }
-  UnwindIfGivenUp();
   state->active_.store(false, std::memory_order_relaxed);
   if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
     AsOr(state->parent_)->active_child_ = nullptr;

@@ -5,7 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <thread>
+#include <vector>
 
 #include "test_support.h"
 
@@ -226,6 +229,92 @@ TEST_F(Threaded, ConcurrentPublishersWhileTheEngineRuns) {
     return (*counts)[0].load() == kThreads * kEach && (*counts)[1].load() == kThreads * kEach;
   }, kLimit));
   chart.Stop();
+}
+
+// The engine's lock (ADR 0022) against threads that step at once: every step is taken whole
+// (the counters are written without locked instructions, so a step that overlapped another
+// would lose counts), and a statechart that never settles, stepped by the engine thread without
+// end, still answers ActiveStates() promptly on another thread.
+TEST_F(Threaded, StepsOfSeveralThreadsAreTakenOneAtATime) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* a = chart.Add<BasicState>("A", &chart);
+  auto* b = chart.Add<BasicState>("B", &chart);
+  // The guard gives the processor away in the middle of the step: another thread's step would
+  // begin inside this one if the lock let it.
+  std::atomic<int> inside{0};
+  std::atomic<int> most_inside{0};
+  auto guard = [&](Blackboard&) {
+    const int now = ++inside;
+    int most = most_inside.load();
+    while (now > most && !most_inside.compare_exchange_weak(most, now)) {
+    }
+    std::this_thread::yield();
+    --inside;
+    return true;
+  };
+  chart.AddTransition(start, a);
+  chart.AddTransition(a, b, If(guard));
+  chart.AddTransition(b, a, If(guard));
+  chart.Activate();
+
+  constexpr int kThreads = 3;
+  constexpr int kSteps = 1000;
+  std::atomic<int> refused{0};
+  std::vector<std::thread> steppers;
+  for (int t = 0; t < kThreads; ++t) {
+    steppers.emplace_back([&] {
+      for (int i = 0; i < kSteps; ++i) {
+        if (!chart.Step()) ++refused;
+      }
+    });
+  }
+  for (auto& stepper : steppers) stepper.join();
+  EXPECT_EQ(most_inside.load(), 1) << "two steps overlapped";
+  EXPECT_EQ(refused.load(), 0);
+  EXPECT_EQ(chart.StepNumber(), static_cast<std::size_t>(kThreads * kSteps));
+  EXPECT_EQ(chart.TransitionsTaken(), static_cast<std::size_t>(kThreads * kSteps));
+}
+
+TEST_F(Threaded, ActiveStatesAnswersWhileTheEngineThreadNeverSettles) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* a = chart.Add<BasicState>("A", &chart);
+  auto* b = chart.Add<BasicState>("B", &chart);
+  chart.AddTransition(start, a);
+  chart.AddTransition(a, b, Always());
+  chart.AddTransition(b, a, Always());
+  chart.Start();
+  ASSERT_TRUE(WaitUntil([&] { return chart.TransitionsTaken() > 10000; }, kLimit));
+
+  auto slowest = Clock::duration::zero();
+  for (int i = 0; i < 50; ++i) {
+    const auto begin = Clock::now();
+    const auto names = chart.ActiveStates();
+    slowest = std::max(slowest, Clock::now() - begin);
+    // Taken between two steps: the root and exactly one of A and B.
+    ASSERT_EQ(names.size(), 2U);
+    EXPECT_TRUE(names[1] == "A" || names[1] == "B") << names[1];
+  }
+  const std::size_t taken = chart.TransitionsTaken();
+  ASSERT_TRUE(WaitUntil([&] { return chart.TransitionsTaken() > taken; }, kLimit))
+      << "the engine thread goes on after the readers";
+  chart.Stop();
+  EXPECT_LT(slowest, milliseconds(100));
+}
+
+TEST_F(Threaded, UserCodeInsideAStepMayCallBackIntoTheStatechart) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* a = chart.Add<BasicState>("A", &chart);
+  std::vector<std::string> seen;
+  chart.AddTransition(start, a, If([&](Blackboard&) {
+                        seen = chart.ActiveStates();  // on the stepping thread, under its lock
+                        return true;
+                      }));
+  chart.RunUntilStable();
+  EXPECT_THAT(seen, ElementsAre("Root", "Root_1"));
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "A"));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -57,8 +58,10 @@ class State {
   /// 0 for the root.
   std::size_t Depth() const noexcept { return depth_; }
 
-  virtual void OnEntry() {}
-  virtual void OnExit() {}
+  /// Hooks for subclasses. State's own do nothing, and the engine does not call them: a state
+  /// class that overrides neither costs a transition no call.
+  virtual void OnEntry();
+  virtual void OnExit();
 
  protected:
   State(std::string name, State* parent, StateKind kind);
@@ -71,8 +74,11 @@ class State {
   std::string label_;
   State* parent_;
   StateKind kind_;
-  std::size_t depth_;
   std::atomic<bool> active_{false};
+  // Whether OnEntry()/OnExit() are overridden, i.e. worth a call (after Activate()).
+  bool calls_entry_ = true;
+  bool calls_exit_ = true;
+  std::uint32_t depth_;
   std::vector<State*> children_;
   std::vector<TransitionSegmentBase*> outgoing_;
   Blackboard* scope_ = nullptr;
@@ -134,8 +140,8 @@ class BasicState : public State {
   std::unique_ptr<IActivity> activity_;
   std::atomic<bool> running_{false};
   std::atomic<std::size_t> launches_{0};
-  std::size_t relaunches_ = 0;  // entries while the activity still ran (engine's wake lock)
-  std::size_t watch_slot_ = 0;  // the watchdog's slot of the activity (after Activate)
+  std::uint32_t relaunches_ = 0;  // entries while the activity still ran (engine's wake lock)
+  std::uint32_t watch_slot_ = 0;  // the watchdog's slot of the activity (after Activate)
 };
 
 /// The initial pseudo-state of an OR state.

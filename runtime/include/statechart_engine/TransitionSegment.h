@@ -1,6 +1,7 @@
 #ifndef STATECHART_ENGINE_TRANSITION_SEGMENT_H
 #define STATECHART_ENGINE_TRANSITION_SEGMENT_H
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -46,8 +47,11 @@ class TransitionSegmentBase {
   // Computed by the engine when the statechart is activated.
   State* lca_ = nullptr;
   State* exit_top_ = nullptr;         // the child of lca_ that contains the source
-  std::vector<State*> entry_path_;    // from the child of lca_ that contains the target, down to it
+  // From the child of lca_ that contains the target down to it, in the engine's table of paths
+  // (one allocation for every transition of the statechart).
+  State* const* entry_path_ = nullptr;
   Blackboard* scope_ = nullptr;
+  std::uint32_t entry_length_ = 0;
 };
 
 /// A transition between states of the given types (as the generator names them).

@@ -139,7 +139,12 @@ class Blackboard {
     MessagePtr message;
     TimePoint time;
   };
+  // What the blackboard holds: topics, messages, the inbox, wake-ups. Most blackboards of a
+  // process (a statechart's root, its regions) never hold a message, so it is made by the
+  // first subscription, publish or wake-up, not with the blackboard.
+  struct Contents;
   // Callers hold mutex_.
+  Contents& Made();
   void Apply(std::string key, Kind kind, const MessagePtr& message, TimePoint time);
   void Queue(std::string key, Kind kind, const MessagePtr& message, TimePoint time);
 
@@ -147,17 +152,7 @@ class Blackboard {
   const std::string name_;
 
   mutable std::mutex mutex_;
-  std::set<std::string> topics_;
-  std::map<std::string, Entry> states_;
-  std::map<std::string, std::deque<MessagePtr>> signals_;
-  std::map<std::string, std::deque<Entry>> data_;
-  // The inbox: what arrived since the last ProcessMessages(), bounded as the visible part is
-  // (a State message replaces the one waiting before it).
-  std::map<std::string, Entry> inbox_states_;
-  std::map<std::string, std::deque<MessagePtr>> inbox_signals_;
-  std::map<std::string, std::deque<Entry>> inbox_data_;
-  std::size_t inbox_size_ = 0;
-  std::multiset<TimePoint> wakeups_;
+  std::unique_ptr<Contents> contents_;  // null until needed
 };
 
 }  // namespace kse::messaging
