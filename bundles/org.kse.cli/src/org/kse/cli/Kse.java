@@ -40,16 +40,16 @@ public final class Kse {
 			usage: kse <command> [options]
 
 			commands:
-			  transform <formula> [-o model.stct] [--name NAME]
-			                      turn liveness formulas into a statechart model
-			  validate <model.stct> [<source-folder>] [--messages DIR]
-			                      check a model against the statechart rules
-			  label <model.stct> [-o out.stct]
+			  transform <formula>... [-o model.stct|folder] [--name NAME]
+			                      turn liveness formulas into statechart models
+			  validate <model.stct>... [--source DIR] [--messages DIR]
+			                      check models against the statechart rules
+			  label <model.stct>... [-o out.stct]
 			                      renumber labels and rename states and transitions
-			  generate <model.stct> <source-folder> [--logger]
-			                      write the Monas C++ of a model into a source tree
-			  diagram <model.stct> [-o diagram.svg] [--arrange] [--save-notation]
-			                      draw the statechart as an SVG picture
+			  generate <model.stct>... <source-folder> | -o <source-folder> [--logger]
+			                      write the Monas C++ of models into a source tree
+			  diagram <model.stct>... [-o diagram.svg] [--arrange] [--save-notation]
+			                      draw statecharts as SVG pictures
 			  serve <folder> [--port N]
 			                      edit the folder's statecharts as diagrams in a local browser
 			  help [command]      show help
@@ -58,35 +58,40 @@ public final class Kse {
 			Run 'kse <command> --help' for a command's options.""";
 
 	private static final String TRANSFORM_HELP = """
-			usage: kse transform <formula> [-o model.stct] [--name NAME] [--quiet]
+			usage: kse transform <formula>... [-o model.stct|folder] [--name NAME] [--quiet]
 
 			Reads liveness formulas (one 'name = expression' per line; the original tool's .txt
 			files with the model's name on the first line are read too) and writes the statechart
 			built by the rules of the original KSE. Problems are printed as file:line:column.
-			  -o, --output FILE   where to write the model (default: the formula file with .stct)
+			Each formula file gives one model.
+			  -o, --output FILE   where to write the model (default: the formula file with .stct);
+			                      with several formula files, the folder to write them into
 			  --name NAME         the model's name (default: the file's first line, else the root formula)
 			  -q, --quiet         no progress lines""";
 
 	private static final String VALIDATE_HELP = """
-			usage: kse validate <model.stct> [<source-folder>] [--messages DIR]...
+			usage: kse validate <model.stct>... [--source DIR] [--messages DIR]...
 
-			Checks a statechart against the KSE rules and the transition-expression grammar;
+			Checks statecharts against the KSE rules and the transition-expression grammar;
 			topics, message types and fields are checked against the standard messages, the
 			source folder's messages/*.proto (as kse generate reads them: a message defined
 			there replaces the standard one of the same name) and each --messages folder.
-			Prints one diagnostic per line as 'file: label (name): severity: message'.
-			Exit code 0 when the model has no error, 1 when it has errors.""";
+			Prints one diagnostic per line as 'file: label (name): severity: message', then a
+			count per model. Exit code 0 when no model has an error, 1 when one has errors.
+			  --source DIR   the Monas source folder the models are generated into
+			                 ('kse validate model.stct DIR' says the same for one model)""";
 
 	private static final String LABEL_HELP = """
-			usage: kse label <model.stct> [-o out.stct]
+			usage: kse label <model.stct>... [-o out.stct]
 
 			Gives every state a unique hierarchical label in execution order (START first, then
 			the order a walk along the transitions reaches the states, END last), names auxiliary
 			states after their label and transitions '<source>_TO_<target>'. Labeling twice
-			changes nothing. Writes the model in place unless -o is given.""";
+			changes nothing. Writes each model in place unless -o is given (with one model).""";
 
 	private static final String GENERATE_HELP = """
-			usage: kse generate <model.stct>... <source-folder> [--logger] [--messages DIR]... [--quiet]
+			usage: kse generate <model.stct>... (<source-folder> | -o <source-folder>)
+			                    [--logger] [--no-activities] [--messages DIR]... [--quiet]
 
 			Writes the Monas C++ of each valid model into a source folder: statecharts/<Model>/
 			(the statechart class, one class per guard and per action list, CMakeLists.txt) and
@@ -97,18 +102,22 @@ public final class Kse {
 			(compiled by the generated CMake) and each --messages folder. A message the source
 			folder defines again replaces the standard one in the checks (a note says which);
 			the C++ still uses the runtime's, which every program links.
-			  --logger     conditions print their result when evaluated
-			  -q, --quiet  no progress lines""";
+			  -o, --output DIR   the source folder (instead of the last argument)
+			  --logger           conditions print their result when evaluated
+			  --no-activities    write the statecharts only, no activity skeletons (for a build
+			                     that generates into its build tree: CMake's kse_add_statechart)
+			  -q, --quiet        no progress lines""";
 
 	private static final String DIAGRAM_HELP = """
-			usage: kse diagram <model.stct> [-o diagram.svg] [--arrange] [--save-notation]
+			usage: kse diagram <model.stct>... [-o diagram.svg] [--arrange] [--save-notation]
 
 			Draws the statechart in the thesis' notation as SVG: START a black disc, END a white
 			disc with a black centre, CONDITION a circled C, BASIC green, OR yellow, AND light blue;
 			transitions labelled with the first line of their expression (all of it on hover).
 			Positions come from <Model>.notation.json beside the model, else from the original
 			tool's <Model>.kse diagram, else ELK arranges the states.
-			  -o, --output FILE   where to write the picture (default: the model file with .svg)
+			  -o, --output FILE   where to write the picture, with one model (default: the model
+			                      file with .svg)
 			  --arrange           arrange every state anew with ELK
 			  --save-notation     write the positions used to <Model>.notation.json""";
 
@@ -130,6 +139,14 @@ public final class Kse {
 	public Kse(PrintStream out, PrintStream err) {
 		this.out = out;
 		this.err = err;
+	}
+
+	/** The {@code kse} command on a plain class path (the launcher of ADR 0023). */
+	public static void main(String[] args) {
+		int code = new Kse(System.out, System.err).run(args);
+		System.out.flush();
+		System.err.flush();
+		System.exit(code);
 	}
 
 	public int run(String... args) {
@@ -207,6 +224,18 @@ public final class Kse {
 		if (bundle != null) {
 			return bundle.getVersion().toString();
 		}
+		// on the plain class path of the launcher the jars are still bundles: read their manifest
+		var source = type.getProtectionDomain().getCodeSource();
+		if (source != null && source.getLocation() != null && source.getLocation().getPath().endsWith(".jar")) {
+			try (var jar = new java.util.jar.JarFile(new java.io.File(source.getLocation().toURI()))) {
+				String version = jar.getManifest() == null ? null : jar.getManifest().getMainAttributes().getValue("Bundle-Version");
+				if (version != null) {
+					return version;
+				}
+			} catch (IOException | java.net.URISyntaxException | SecurityException e) {
+				// fall through to the package's version
+			}
+		}
 		String version = type.getPackage() == null ? null : type.getPackage().getImplementationVersion();
 		return version == null ? "development" : version;
 	}
@@ -223,13 +252,23 @@ public final class Kse {
 			out.println(TRANSFORM_HELP);
 			return OK;
 		}
-		Path formula = options.single("formula file");
+		List<Path> formulas = options.many("formula file");
 		quiet = options.flag("-q", "--quiet");
-		Path output = options.value("-o", "--output") != null ? Path.of(options.value("-o", "--output")) : withExtension(formula, "stct");
+		String output = options.value("-o", "--output");
+		if (formulas.size() > 1 && options.value("--name") != null) {
+			throw new UsageException("--name names one model: give one formula file with it");
+		}
+		Path folder = formulas.size() > 1 && output != null ? folder(Path.of(output)) : null;
+		return each(formulas, formula -> transform(formula,
+				folder != null ? folder.resolve(withExtension(formula, "stct").getFileName())
+						: output != null ? Path.of(output) : withExtension(formula, "stct"),
+				options.value("--name")));
+	}
+
+	private int transform(Path formula, Path output, String name) throws IOException {
 		progress(1, 3, "reading and checking " + formula);
 		String text = readText(formula);
-		FormulaTransformation.Outcome outcome = FormulaTransformation.run(text, URI.createFileURI(formula.toAbsolutePath().toString()),
-				options.value("--name"));
+		FormulaTransformation.Outcome outcome = FormulaTransformation.run(text, URI.createFileURI(formula.toAbsolutePath().toString()), name);
 		int errors = report(formula, outcome.issues());
 		if (outcome.model() == null) {
 			err.println("kse: " + formula + ": " + errors + (errors == 1 ? " error" : " errors") + ", no model written");
@@ -243,33 +282,35 @@ public final class Kse {
 	}
 
 	private int validate(List<String> args) throws IOException, UsageException {
-		Options options = Options.parse(args, List.of("--messages"), List.of());
+		Options options = Options.parse(args, List.of("--messages", "--source"), List.of());
 		if (options.help) {
 			out.println(VALIDATE_HELP);
 			return OK;
 		}
-		if (options.positional.isEmpty() || options.positional.size() > 2) {
-			throw new UsageException(options.positional.isEmpty() ? "missing model file" : "expected a model file and at most one source folder");
+		List<Path> models = options.many("model file");
+		Path sourceFolder = options.value("--source") != null ? folderThatExists(Path.of(options.value("--source"))) : null;
+		// the form of the first release: one model and a source folder as the second argument
+		if (sourceFolder == null && models.size() == 2 && (Files.isDirectory(models.get(1)) || !models.get(1).toString().endsWith(".stct"))) {
+			sourceFolder = folderThatExists(models.get(1));
+			models = models.subList(0, 1);
 		}
-		Path file = Path.of(options.positional.get(0));
 		List<Path> folders = new ArrayList<>(options.paths("--messages"));
-		Path sourceFolder = null;
-		if (options.positional.size() == 2) {
-			sourceFolder = Path.of(options.positional.get(1));
-			if (!Files.isDirectory(sourceFolder)) {
-				throw new NoSuchFileException(sourceFolder + " (not a folder)");
-			}
+		if (sourceFolder != null) {
 			folders.add(sourceFolder.resolve(MonasGenerator.MESSAGES_FOLDER));
 		}
-		Model model = StatechartResources.load(file);
 		StandardMessages.Merged messages = StandardMessages.merge(folders);
-		note(file, messages.replacements(), sourceFolder, false);
-		int errors = 0;
-		int warnings = 0;
 		for (ProtoProblem problem : messages.problems()) {
-			warnings++;
 			out.println(messageProblem(problem));
 		}
+		Path shownFolder = sourceFolder;
+		return each(models, model -> validate(model, messages, shownFolder));
+	}
+
+	private int validate(Path file, StandardMessages.Merged messages, Path sourceFolder) throws IOException {
+		Model model = StatechartResources.load(file);
+		note(file, messages.replacements(), sourceFolder, false);
+		int errors = 0;
+		int warnings = messages.problems().size();
 		for (Diagnostic diagnostic : ModelValidation.validate(model, messages.catalog()).getChildren()) {
 			boolean error = diagnostic.getSeverity() == Diagnostic.ERROR;
 			errors += error ? 1 : 0;
@@ -286,37 +327,41 @@ public final class Kse {
 			out.println(LABEL_HELP);
 			return OK;
 		}
-		Path file = options.single("model file");
-		Path output = options.value("-o", "--output") != null ? Path.of(options.value("-o", "--output")) : file;
-		Model model = StatechartResources.load(file);
-		Labeler.label(model);
-		StatechartResources.save(model, output);
-		out.println("labeled " + output + " (" + statistics(model) + ")");
-		return OK;
+		List<Path> files = options.many("model file");
+		String output = options.value("-o", "--output");
+		if (output != null && files.size() > 1) {
+			throw new UsageException("-o names one output: give one model file with it (without -o each model is labeled in place)");
+		}
+		return each(files, file -> {
+			Path target = output != null ? Path.of(output) : file;
+			Model model = StatechartResources.load(file);
+			Labeler.label(model);
+			StatechartResources.save(model, target);
+			out.println("labeled " + target + " (" + statistics(model) + ")");
+			return OK;
+		});
 	}
 
 	private int generate(List<String> args) throws IOException, UsageException {
-		Options options = Options.parse(args, List.of("--messages"), List.of("--logger", "-q", "--quiet"));
+		Options options = Options.parse(args, List.of("--messages", "-o", "--output"), List.of("--logger", "--no-activities", "-q", "--quiet"));
 		if (options.help) {
 			out.println(GENERATE_HELP);
 			return OK;
 		}
-		if (options.positional.size() < 2) {
-			throw new UsageException("expected one or more model files and a source folder");
+		String output = options.value("-o", "--output");
+		List<String> models = output != null ? options.positional : options.positional.subList(0, Math.max(0, options.positional.size() - 1));
+		if (models.isEmpty()) {
+			throw new UsageException("expected one or more model files and a source folder (as the last argument or with -o)");
 		}
 		quiet = options.flag("-q", "--quiet");
-		Path folder = Path.of(options.positional.get(options.positional.size() - 1));
-		int result = OK;
-		for (String model : options.positional.subList(0, options.positional.size() - 1)) {
-			result = Math.max(result, generate(Path.of(model), folder, options));
-		}
-		return result;
+		Path folder = Path.of(output != null ? output : options.positional.get(options.positional.size() - 1));
+		return each(models.stream().map(Path::of).toList(), model -> generate(model, folder, options));
 	}
 
 	private int generate(Path file, Path folder, Options options) throws IOException {
 		Model model = StatechartResources.load(file);
 		try {
-			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages")),
+			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages"), !options.flag("--no-activities")),
 					(step, steps, what) -> progress(step, steps, what));
 			note(file, report.replacements(), folder, true);
 			for (ProtoProblem problem : report.messageProblems()) {
@@ -344,9 +389,16 @@ public final class Kse {
 			out.println(DIAGRAM_HELP);
 			return OK;
 		}
-		Path file = options.single("model file");
+		List<Path> files = options.many("model file");
 		String output = options.value("-o", "--output");
-		Path picture = output != null ? Path.of(output) : file.resolveSibling(file.getFileName().toString().replaceFirst("\\.stct$", "") + ".svg");
+		if (output != null && files.size() > 1) {
+			throw new UsageException("-o names one picture: give one model file with it (without -o each picture is written beside its model)");
+		}
+		return each(files, file -> diagram(file,
+				output != null ? Path.of(output) : file.resolveSibling(file.getFileName().toString().replaceFirst("\\.stct$", "") + ".svg"), options));
+	}
+
+	private int diagram(Path file, Path picture, Options options) throws IOException {
 		Model model = StatechartResources.load(file);
 		org.kse.notation.Notation notation;
 		String from;
@@ -429,6 +481,48 @@ public final class Kse {
 			Thread.currentThread().interrupt();
 		}
 		return OK;
+	}
+
+	/** One file's step of a command that takes many files. */
+	@FunctionalInterface
+	private interface FileStep {
+		int run(Path file) throws IOException;
+	}
+
+	/**
+	 * Runs a step on each file in one JVM (what a build with many models needs). A file that
+	 * cannot be read is reported and the others still run; the exit code is the worst one.
+	 */
+	private int each(List<Path> files, FileStep step) {
+		int result = OK;
+		for (Path file : files) {
+			try {
+				result = Math.max(result, step.run(file));
+			} catch (IOException e) {
+				err.println("kse: " + e.getMessage());
+				result = FAILED;
+			} catch (UncheckedIOException e) {
+				err.println("kse: " + e.getCause().getMessage());
+				result = FAILED;
+			}
+		}
+		return result;
+	}
+
+	/** A folder to write into: created when missing, refused when it is a file. */
+	private static Path folder(Path path) throws IOException {
+		if (Files.exists(path) && !Files.isDirectory(path)) {
+			throw new IOException(path + ": not a folder (with several inputs, -o names the folder to write into)");
+		}
+		Files.createDirectories(path);
+		return path;
+	}
+
+	private static Path folderThatExists(Path path) throws NoSuchFileException {
+		if (!Files.isDirectory(path)) {
+			throw new NoSuchFileException(path + " (not a folder)");
+		}
+		return path;
 	}
 
 	/**
@@ -556,6 +650,13 @@ public final class Kse {
 				}
 			}
 			return options;
+		}
+
+		List<Path> many(String what) throws UsageException {
+			if (positional.isEmpty()) {
+				throw new UsageException("missing " + what);
+			}
+			return positional.stream().map(Path::of).toList();
 		}
 
 		Path single(String what) throws UsageException {

@@ -41,13 +41,19 @@ public final class MonasGenerator {
 	/**
 	 * Generation settings. {@code logger}: conditions print their result.
 	 * {@code messageFolders}: folders of the user's own .proto files, besides the source
-	 * folder's {@code messages/} that is always read.
+	 * folder's {@code messages/} that is always read. {@code activities}: whether skeletons of
+	 * new activities are written; a build that generates the statechart into its build tree
+	 * (CMake's kse_add_statechart) keeps the activities in the source tree, so it writes none.
 	 */
-	public record Options(boolean logger, List<Path> messageFolders) {
+	public record Options(boolean logger, List<Path> messageFolders, boolean activities) {
 		public static final Options DEFAULT = new Options(false, List.of());
 
 		public Options(boolean logger) {
 			this(logger, List.of());
+		}
+
+		public Options(boolean logger, List<Path> messageFolders) {
+			this(logger, messageFolders, true);
 		}
 	}
 
@@ -137,7 +143,7 @@ public final class MonasGenerator {
 		}
 		// null for an activity the user already has: it is never written, so it is not rendered either.
 		Map<String, Map<String, String>> newActivities = new LinkedHashMap<>();
-		for (Map.Entry<String, Node> activity : plan.activities().entrySet()) {
+		for (Map.Entry<String, Node> activity : options.activities() ? plan.activities().entrySet() : Set.<Map.Entry<String, Node>>of()) {
 			String name = activity.getKey();
 			if (usersActivity(root, Path.of("activities", name))) {
 				newActivities.put(name, null);

@@ -349,6 +349,72 @@ class CommandLineTest {
 		}
 	}
 
+	// ------------------------------------------------------------------ many files in one run (issue 17, item 1)
+
+	@Test
+	void validateTakesManyModelsAndReportsEachOneEvenWhenOneCannotBeRead() throws IOException {
+		Path goalie = copyLegacy("Goalie/Goalie.stct");
+		Path tester = copyLegacy("TestBehavior/TestBehavior.stct");
+		Path broken = directory.resolve("Broken.stct");
+		Model model = Models.model("Broken");
+		Node main = root(model, "Main", "0", "OR");
+		transition(model, child(main, "0.1", "0.1", "START"), child(main, "0.2", "0.2", "END"), "[(");
+		StatechartResources.save(model, broken);
+		Path missing = directory.resolve("Missing.stct");
+
+		Run run = kse("validate", goalie.toString(), broken.toString(), missing.toString(), tester.toString());
+		assertEquals(Kse.FAILED, run.code(), "a model that cannot be read makes the run fail: " + run.all());
+		assertTrue(run.err().contains(goalie + ": 0 errors"), run.all());
+		assertTrue(run.err().contains(tester + ": 0 errors"), "the model after the missing one is still checked: " + run.all());
+		assertTrue(run.out().contains(broken + ": ") && run.out().contains(": error: "), run.all());
+		assertTrue(run.err().contains("kse: " + missing), run.all());
+
+		Run withoutMissing = kse("validate", goalie.toString(), broken.toString());
+		assertEquals(Kse.INVALID, withoutMissing.code(), "errors in one of the models: " + withoutMissing.all());
+		Run good = kse("validate", goalie.toString(), tester.toString(), "--source", directory.toString());
+		assertEquals(Kse.OK, good.code(), good.all());
+	}
+
+	@Test
+	void generateTakesManyModelsIntoTheFolderOfOptionO() throws IOException {
+		Path goalie = copyLegacy("Goalie/Goalie.stct");
+		Path tester = copyLegacy("TestBehavior/TestBehavior.stct");
+		Path tree = directory.resolve("src");
+		Run run = kse("generate", "-q", goalie.toString(), tester.toString(), "-o", tree.toString());
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertTrue(Files.isRegularFile(tree.resolve("statecharts/Goalie/Goalie.cpp")), run.all());
+		assertTrue(Files.isRegularFile(tree.resolve("statecharts/TestBehavior/TestBehavior.cpp")), run.all());
+		assertTrue(Files.isDirectory(tree.resolve("activities")), "skeletons of the activities: " + run.all());
+
+		Path buildTree = directory.resolve("build");
+		Run statechartsOnly = kse("generate", "-q", "--no-activities", goalie.toString(), "-o", buildTree.toString());
+		assertEquals(Kse.OK, statechartsOnly.code(), statechartsOnly.all());
+		assertTrue(Files.isRegularFile(buildTree.resolve("statecharts/Goalie/Goalie.cpp")), statechartsOnly.all());
+		assertFalse(Files.exists(buildTree.resolve("activities")), "--no-activities writes no skeleton: " + statechartsOnly.all());
+		assertTrue(statechartsOnly.out().contains("0 activities kept"), statechartsOnly.all());
+	}
+
+	@Test
+	void transformAndLabelTakeManyFiles() throws IOException {
+		Path goalie = copyLegacy("Goalie/Goalie.txt");
+		Path tester = copyLegacy("GUITester/GUITester.txt");
+		Path models = directory.resolve("models");
+		Run run = kse("transform", "-q", goalie.toString(), tester.toString(), "-o", models.toString());
+		assertEquals(Kse.OK, run.code(), run.all());
+		assertEquals(List.of(models.resolve("GUITester.stct"), models.resolve("Goalie.stct")), list(models), run.all());
+
+		Run named = kse("transform", "-q", goalie.toString(), tester.toString(), "--name", "One");
+		assertEquals(Kse.FAILED, named.code(), named.all());
+		assertTrue(named.err().contains("--name names one model"), named.all());
+
+		Run label = kse("label", models.resolve("Goalie.stct").toString(), models.resolve("GUITester.stct").toString());
+		assertEquals(Kse.OK, label.code(), label.all());
+		assertTrue(label.out().contains("labeled " + models.resolve("Goalie.stct")) && label.out().contains("labeled " + models.resolve("GUITester.stct")),
+				label.all());
+		Run oneOutputForTwo = kse("label", models.resolve("Goalie.stct").toString(), models.resolve("GUITester.stct").toString(), "-o", "x.stct");
+		assertEquals(Kse.FAILED, oneOutputForTwo.code(), oneOutputForTwo.all());
+	}
+
 	// ------------------------------------------------------------------ helpers
 
 	private Path copyLegacy(String relative) throws IOException {

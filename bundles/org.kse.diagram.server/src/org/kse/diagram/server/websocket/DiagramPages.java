@@ -17,7 +17,7 @@ public final class DiagramPages {
 	public static URL builtIn() {
 		Bundle self = FrameworkUtil.getBundle(DiagramPages.class);
 		if (self == null || self.getBundleContext() == null) {
-			return null;
+			return onClassPath();
 		}
 		for (Bundle bundle : self.getBundleContext().getBundles()) {
 			if (CLIENT_BUNDLE.equals(bundle.getSymbolicName())) {
@@ -26,5 +26,22 @@ public final class DiagramPages {
 			}
 		}
 		return null;
+	}
+
+	/**
+	 * The page when KSE runs on a plain class path (the kse command's launcher): the client's jar
+	 * is on it, and its bundled script has a name no other jar uses.
+	 */
+	private static URL onClassPath() {
+		URL script = DiagramPages.class.getClassLoader().getResource("dist/kse-diagram.js");
+		if (script == null) {
+			return null;
+		}
+		String address = script.toExternalForm();
+		try {
+			return java.net.URI.create(address.substring(0, address.lastIndexOf('/') + 1)).toURL();
+		} catch (java.net.MalformedURLException | IllegalArgumentException e) {
+			return null;
+		}
 	}
 }

@@ -41,7 +41,8 @@ final class PageServlet extends HttpServlet {
 		String extension = path.substring(path.lastIndexOf('.') + 1).toLowerCase(Locale.ROOT);
 		URL file;
 		try {
-			file = URI.create(base.toString()).resolve(path).toURL();
+			// appended, not resolved: the page may sit in a jar (jar:file:...!/dist/), whose URI is opaque
+			file = URI.create(base.toString() + path).toURL();
 		} catch (IllegalArgumentException e) {
 			response.sendError(HttpServletResponse.SC_NOT_FOUND);
 			return;
