@@ -22,8 +22,20 @@
 #       Statecharts and activities register themselves from static objects
 #       (StatechartRegistrar / ActivityRegistrar); a static archive would let the linker drop
 #       those objects, an OBJECT library links every one of them into the final executable.
+#
+#   kse_add_statechart(<name> <model.stct> [MESSAGES <dir>...] [LOGGER])
+#       The statechart of a KSE model as an OBJECT library statechart_<name>, linked to
+#       kse::runtime. The build generates its C++ from the model (`kse generate --no-activities`
+#       into the build tree) and generates it again whenever the model, a .proto of the MESSAGES
+#       folders or the kse command changes; an unchanged statechart is not compiled again.
+#       <name> is the model's name (its class); a model named otherwise stops the build with
+#       the name to use. The activities are the project's own source files (kse_add_behavior, or
+#       the folders `kse generate <model> <source-folder>` writes once). MESSAGES: folders of the
+#       project's own .proto files the guards read; LOGGER: conditions print their result.
+#       The kse command is KSE_EXECUTABLE (a cache variable), else `kse` on the PATH.
 
 include_guard(GLOBAL)
+set(_KSE_GENERATE_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/KseGenerate.cmake)
 
 function(kse_protobuf_generate)
   cmake_parse_arguments(ARG "" "SOURCES_VAR;HEADERS_VAR;OUTPUT_DIR;PROTO_ROOT" "PROTOS;IMPORT_DIRS" ${ARGN})
@@ -126,4 +138,46 @@ function(kse_add_behavior target)
   add_library(${target} OBJECT ${ARG_SOURCES})
   target_link_libraries(${target} PUBLIC kse::runtime ${ARG_LIBRARIES})
   target_compile_features(${target} PUBLIC cxx_std_17)
+endfunction()
+
+function(kse_add_statechart name model)
+  cmake_parse_arguments(ARG "LOGGER" "" "MESSAGES" ${ARGN})
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "kse_add_statechart(${name}): unknown arguments ${ARG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT name MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
+    message(FATAL_ERROR "kse_add_statechart(${name}): the name must be the model's name, a C++ identifier")
+  endif()
+  find_program(KSE_EXECUTABLE kse DOC "the KSE command line (kse generate runs at build time)")
+  if(NOT KSE_EXECUTABLE)
+    message(FATAL_ERROR "kse_add_statechart(${name}): the kse command was not found: put it on the PATH "
+      "or pass -DKSE_EXECUTABLE=/path/to/kse")
+  endif()
+  get_filename_component(_model ${model} ABSOLUTE)
+  if(NOT EXISTS ${_model})
+    message(FATAL_ERROR "kse_add_statechart(${name}): no model ${_model}")
+  endif()
+  set(_messages "")
+  set(_protos "")
+  foreach(_dir IN LISTS ARG_MESSAGES)
+    get_filename_component(_absdir ${_dir} ABSOLUTE)
+    list(APPEND _messages ${_absdir})
+    file(GLOB_RECURSE _found CONFIGURE_DEPENDS ${_absdir}/*.proto)
+    list(APPEND _protos ${_found})
+  endforeach()
+  set(_out ${CMAKE_CURRENT_BINARY_DIR}/kse_${name})
+  set(_source ${_out}/statecharts/${name}/${name}.cpp)
+  set(_stamp ${_out}/${name}.stamp)
+  add_custom_command(
+    OUTPUT ${_stamp}
+    BYPRODUCTS ${_source} ${_out}/statecharts/${name}/${name}.h
+    COMMAND ${CMAKE_COMMAND} -DKSE=${KSE_EXECUTABLE} -DMODEL=${_model} -DNAME=${name} -DOUT=${_out}
+            -DSTAMP=${_stamp} "-DMESSAGES=${_messages}" -DLOGGER=${ARG_LOGGER} -P ${_KSE_GENERATE_SCRIPT}
+    DEPENDS ${_model} ${_protos} ${KSE_EXECUTABLE} ${_KSE_GENERATE_SCRIPT}
+    COMMENT "kse generate ${name} from ${model}"
+    VERBATIM)
+  add_library(statechart_${name} OBJECT ${_source} ${_stamp})
+  target_include_directories(statechart_${name} PUBLIC ${_out}/statecharts/${name})
+  target_link_libraries(statechart_${name} PUBLIC kse::runtime)
+  target_compile_features(statechart_${name} PUBLIC cxx_std_17)
 endfunction()

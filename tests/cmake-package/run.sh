@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# A project outside the repository builds a behaviour with the runtime's CMake package:
+# find_package(kse_runtime) and kse_add_statechart(Goalie models/Goalie.stct), which runs
+# `kse generate` at build time. Checks that (1) it builds and plays a match with the Goalie,
+# (2) a build with nothing changed does nothing, (3) a changed model is generated and compiled
+# again, and the program plays the change, (4) a model with an error stops the build with the
+# model's diagnostic, (5) a call named otherwise than the model says which name to use.
+#   usage: tests/cmake-package/run.sh <runtime-prefix> <out-folder>
+set -euo pipefail
+here="$(cd "$(dirname "$0")/../.." && pwd)"
+prefix="$(cd "$1" && pwd)"
+out="$2"
+rm -rf "$out"
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+fail() { echo "cmake-package: $*" >&2; exit 1; }
+
+project="$out/team"
+mkdir -p "$project/models"
+cp "$here/tests/cmake-package/project/CMakeLists.txt" "$project/"
+cp "$here/examples/Goalie/Goalie.stct" "$project/models/"
+cp -r "$here/examples/src/activities" "$project/activities"
+
+cmake -S "$project" -B "$out/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
+  -DKSE_EXECUTABLE="$here/kse" > "$out/configure.log" || { cat "$out/configure.log"; fail "configure failed"; }
+cmake --build "$out/build" -j 2 > "$out/build1.log" 2>&1 || { tail -30 "$out/build1.log"; fail "the first build failed"; }
+grep -q "kse generate Goalie from models/Goalie.stct" "$out/build1.log" || fail "the first build did not run kse generate"
+[ -f "$out/build/kse_Goalie/statecharts/Goalie/Goalie.cpp" ] || fail "no generated Goalie.cpp in the build tree"
+[ ! -e "$out/build/kse_Goalie/activities" ] || fail "activity skeletons were written into the build tree"
+"$out/build/team-match" --list | grep -qx "Goalie" || { "$out/build/team-match" --list; fail "the program does not list the Goalie"; }
+"$out/build/team-match" --home Goalie:1 --away Goalie:1 --half 20 --seed 3 --quiet --log "$out/match1.jsonl" > "$out/match1.txt" \
+  || { cat "$out/match1.txt"; fail "the match with the Goalie failed"; }
+echo "   built and played: $(head -n 1 "$out/match1.txt")"
+
+cmake --build "$out/build" -j 2 > "$out/build2.log" 2>&1
+grep -q "no work to do" "$out/build2.log" || { cat "$out/build2.log"; fail "a build with nothing changed did work"; }
+echo "   nothing changed: no work"
+
+# a change a user makes: the goalie's wait before it scans again (the first TimeoutAction)
+grep -q 'TimeoutAction.behavior.250' "$project/models/Goalie.stct" || fail "the Goalie has no TimeoutAction.behavior.250 to change"
+sed -i '0,/TimeoutAction.behavior.250/s//TimeoutAction.behavior.4321/' "$project/models/Goalie.stct"
+cmake --build "$out/build" -j 2 > "$out/build3.log" 2>&1 || { tail -30 "$out/build3.log"; fail "the build after a change failed"; }
+grep -q "kse generate Goalie" "$out/build3.log" || fail "the changed model was not generated again"
+grep -q "Goalie.cpp.o" "$out/build3.log" || fail "the changed statechart was not compiled again"
+grep -rq "4321" "$out/build/kse_Goalie/statecharts/Goalie" || fail "the change is not in the generated C++"
+echo "   model changed: generated and compiled again"
+
+cp "$project/models/Goalie.stct" "$out/Goalie.good"
+sed -i '0,/TimeoutAction.behavior.4321/s//TimeoutAction.behavior.4321(/' "$project/models/Goalie.stct"
+if cmake --build "$out/build" -j 2 > "$out/build4.log" 2>&1; then fail "a model with an error built"; fi
+grep -q "models/Goalie.stct: .*error: expression" "$out/build4.log" || { cat "$out/build4.log"; fail "the build failed without the model's diagnostic"; }
+grep -q "kse_add_statechart(Goalie): kse generate refused" "$out/build4.log" || fail "the failure does not name the call"
+echo "   model with an error: $(grep -m 1 'error: expression' "$out/build4.log" | sed "s#$project/##")"
+cp "$out/Goalie.good" "$project/models/Goalie.stct"
+
+sed -i 's/kse_add_statechart(Goalie models\/Goalie.stct)/kse_add_statechart(Keeper models\/Goalie.stct)/; s/statechart_Goalie/statechart_Keeper/' "$project/CMakeLists.txt"
+if cmake --build "$out/build" -j 2 > "$out/build5.log" 2>&1; then fail "a call named otherwise than its model built"; fi
+grep -q "holds the statechart 'Goalie', not 'Keeper'" "$out/build5.log" || { tail -20 "$out/build5.log"; fail "no word of the model's name"; }
+echo "   call named otherwise: $(grep -m 1 -o "holds the statechart.*" "$out/build5.log")"
+echo "cmake-package: an outside project builds its behaviour with kse_add_statechart"
