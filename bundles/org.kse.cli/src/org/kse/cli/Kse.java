@@ -50,8 +50,12 @@ public final class Kse {
 			                      write the Monas C++ of models into a source tree
 			  diagram <model.stct>... [-o diagram.svg] [--arrange] [--save-notation]
 			                      draw statecharts as SVG pictures
-			  serve <folder> [--port N]
+			  edit-transition <model.stct> <from> <to> --expression TEXT
+			                      set the expression of a transition, checked first
+			  serve <folder> [--port N] [--pages DIR]
 			                      edit the folder's statecharts as diagrams in a local browser
+			  demo [--seed N] [--half SECONDS] [--out DIR]
+			                      the pipeline on the examples, then a match (the repository's ./kse)
 			  help [command]      show help
 			  version             show the versions of KSE and of what it runs on
 
@@ -121,6 +125,34 @@ public final class Kse {
 			  --arrange           arrange every state anew with ELK
 			  --save-notation     write the positions used to <Model>.notation.json""";
 
+	private static final String EDIT_TRANSITION_HELP = """
+			usage: kse edit-transition <model.stct> <from> <to> --expression TEXT [--index N]
+			                           [--source DIR] [--messages DIR]... [-o out.stct]
+
+			Sets the expression (event[condition]/actions) of the transition from state <from> to
+			state <to>, each named by its label (0.2.3) or its name, after the checks the
+			Properties view makes: the grammar, and topics, message types and fields against the
+			standard messages, the source folder's messages/*.proto and each --messages folder.
+			An expression with an error is refused and nothing is written (exit 1); warnings are
+			printed and the expression is set. An empty TEXT removes the expression.
+			  --expression TEXT   the new expression, e.g. '[TimeoutCheck(behavior)]/TimeoutAction.behavior.250'
+			  --index N           which of several transitions between the two states (from 1,
+			                      in the model's order; without it several are an error that lists them)
+			  --source DIR        the Monas source folder the model is generated into
+			  -o, --output FILE   where to write the model (default: in place)""";
+
+	private static final String DEMO_HELP = """
+			usage: kse demo [--seed N] [--half SECONDS] [--out DIR]
+
+			Runs the whole pipeline on the example behaviours: validates their models, builds the
+			C++ runtime and the examples with CMake (which generates their statecharts), and plays
+			Goalie, Defender and Attacker against themselves on the simulated field; prints the
+			result and where the log and the picture are. Only the repository's ./kse runs it
+			(releng/demo.sh): it needs the examples and the runtime's sources.
+			  --seed N           seed of the match (default 1)
+			  --half SECONDS     PLAYING seconds of the half (default 600)
+			  --out DIR          where the builds, the log and the picture go (default target/demo)""";
+
 	private static final String SERVE_HELP = """
 			usage: kse serve <folder> [--port N] [--pages DIR]
 
@@ -162,6 +194,9 @@ public final class Kse {
 				case "label" -> label(rest);
 				case "generate" -> generate(rest);
 				case "diagram" -> diagram(rest);
+				case "edit-transition" -> editTransition(rest);
+				case "demo" -> rest.contains("--help") || rest.contains("-h") ? help(List.of("demo"))
+						: usage("kse demo runs from the repository's ./kse, which has the examples and the runtime's sources");
 				case "serve" -> serve(rest);
 				case "help", "-h", "--help" -> help(rest);
 				case "version", "--version" -> version();
@@ -205,6 +240,8 @@ public final class Kse {
 			case "label" -> LABEL_HELP;
 			case "generate" -> GENERATE_HELP;
 			case "diagram" -> DIAGRAM_HELP;
+			case "edit-transition" -> EDIT_TRANSITION_HELP;
+			case "demo" -> DEMO_HELP;
 			case "serve" -> SERVE_HELP;
 			default -> USAGE;
 		});
@@ -423,6 +460,109 @@ public final class Kse {
 		StatechartResources.writeAtomically(picture, org.kse.notation.SvgDiagram.render(model, notation).getBytes(StandardCharsets.UTF_8));
 		out.println("drew " + picture + " (" + statistics(model) + "; positions " + from + ")");
 		return OK;
+	}
+
+	private int editTransition(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("--expression", "--index", "--source", "--messages", "-o", "--output"), List.of());
+		if (options.help) {
+			out.println(EDIT_TRANSITION_HELP);
+			return OK;
+		}
+		if (options.positional.size() != 3) {
+			throw new UsageException("expected a model file, the state the transition leaves and the state it enters");
+		}
+		String expression = options.value("--expression");
+		if (expression == null) {
+			throw new UsageException("--expression TEXT is required (an empty TEXT removes the expression)");
+		}
+		Path file = Path.of(options.positional.get(0));
+		Path output = options.value("-o", "--output") != null ? Path.of(options.value("-o", "--output")) : file;
+		Model model = StatechartResources.load(file);
+		org.kse.model.statechart.Node from = state(file, model, options.positional.get(1));
+		org.kse.model.statechart.Node to = state(file, model, options.positional.get(2));
+		if (from == null || to == null) {
+			return INVALID;
+		}
+		List<org.kse.model.statechart.Transition> between = model.getTransitions().stream()
+				.filter(transition -> transition.getSource() == from && transition.getTarget() == to).toList();
+		org.kse.model.statechart.Transition transition;
+		String index = options.value("--index");
+		if (between.isEmpty()) {
+			err.println("kse: " + file + ": no transition from " + shown(from) + " to " + shown(to));
+			return INVALID;
+		} else if (index != null) {
+			int n;
+			try {
+				n = Integer.parseInt(index);
+			} catch (NumberFormatException e) {
+				throw new UsageException("--index takes a number, not '" + index + "'");
+			}
+			if (n < 1 || n > between.size()) {
+				err.println("kse: " + file + ": --index " + n + ": there " + (between.size() == 1 ? "is 1 transition" : "are " + between.size() + " transitions")
+						+ " from " + shown(from) + " to " + shown(to));
+				return INVALID;
+			}
+			transition = between.get(n - 1);
+		} else if (between.size() > 1) {
+			err.println("kse: " + file + ": " + between.size() + " transitions from " + shown(from) + " to " + shown(to) + "; say which with --index:");
+			for (int i = 0; i < between.size(); i++) {
+				String text = between.get(i).getTE();
+				err.println("  --index " + (i + 1) + ": " + (text == null || text.isBlank() ? "(no expression)" : text.replace("\n", " ")));
+			}
+			return INVALID;
+		} else {
+			transition = between.get(0);
+		}
+		List<Path> folders = new ArrayList<>(options.paths("--messages"));
+		if (options.value("--source") != null) {
+			folders.add(folderThatExists(Path.of(options.value("--source"))).resolve(MonasGenerator.MESSAGES_FOLDER));
+		}
+		String where = file + ": " + shown(from) + "->" + shown(to) + ": ";
+		List<org.kse.validation.ExpressionChecks.Problem> problems = expression.isBlank() ? List.of()
+				: org.kse.validation.ExpressionChecks.check(expression, StandardMessages.merge(folders).catalog());
+		boolean refused = false;
+		for (org.kse.validation.ExpressionChecks.Problem problem : problems) {
+			refused |= problem.error();
+			err.println(where + (problem.error() ? "error" : "warning") + ": expression " + problem);
+		}
+		if (refused) {
+			err.println("kse: " + file + ": the expression was not set, the model is unchanged");
+			return INVALID;
+		}
+		String before = transition.getTE();
+		transition.setTE(expression.isBlank() ? null : expression);
+		StatechartResources.save(model, output);
+		out.println("set " + shown(from) + "->" + shown(to) + " in " + output + ": " + (expression.isBlank() ? "(no expression)" : expression)
+				+ (before == null || before.isBlank() ? "" : " (was " + before.replace("\n", " ") + ")"));
+		return OK;
+	}
+
+	/** A state named by its label, else by its name; null (and a message) when none or several. */
+	private org.kse.model.statechart.Node state(Path file, Model model, String id) {
+		List<org.kse.model.statechart.Node> all = new ArrayList<>();
+		model.eAllContents().forEachRemaining(element -> {
+			if (element instanceof org.kse.model.statechart.Node node) {
+				all.add(node);
+			}
+		});
+		List<org.kse.model.statechart.Node> byLabel = all.stream().filter(node -> id.equals(node.getLabel())).toList();
+		List<org.kse.model.statechart.Node> found = byLabel.isEmpty() ? all.stream().filter(node -> id.equals(node.getName())).toList() : byLabel;
+		if (found.size() == 1) {
+			return found.get(0);
+		}
+		if (found.isEmpty()) {
+			err.println("kse: " + file + ": no state labeled or named '" + id + "'");
+		} else {
+			err.println("kse: " + file + ": " + found.size() + " states named '" + id + "'; name one by its label: "
+					+ String.join(", ", found.stream().map(org.kse.model.statechart.Node::getLabel).toList()));
+		}
+		return null;
+	}
+
+	/** A state as diagnostics show it: its label, and its name when it has another one. */
+	private static String shown(org.kse.model.statechart.Node node) {
+		String label = node.getLabel() == null ? "?" : node.getLabel();
+		return node.getName() == null || node.getName().equals(label) ? label : label + " (" + node.getName() + ")";
 	}
 
 	private int serve(List<String> args) throws IOException, UsageException {

@@ -415,6 +415,76 @@ class CommandLineTest {
 		assertEquals(Kse.FAILED, oneOutputForTwo.code(), oneOutputForTwo.all());
 	}
 
+	// ------------------------------------------------------------------ edit-transition (issue 18, item 4)
+
+	@Test
+	void editTransitionSetsACheckedExpressionAndRefusesABrokenOne() throws IOException {
+		Path goalie = copyLegacy("Goalie/Goalie.stct");
+		org.kse.model.statechart.Transition guarded = StatechartResources.load(goalie).getTransitions().stream()
+				.filter(t -> t.getTE() != null && t.getTE().contains("ballfound()>0")).findFirst().orElseThrow();
+		String from = guarded.getSource().getLabel();
+		String to = guarded.getTarget().getLabel();
+		String expression = "[behavior.State.HeadToBMessage.ballfound()>2]/TimeoutAction.behavior.400";
+
+		Run set = kse("edit-transition", goalie.toString(), from, to, "--expression", expression);
+		assertEquals(Kse.OK, set.code(), set.all());
+		assertTrue(set.out().startsWith("set " + from), set.all());
+		assertTrue(set.out().contains("(was " + guarded.getTE().replace("\n", " ")), set.all());
+		Model changed = StatechartResources.load(goalie);
+		assertEquals(1, changed.getTransitions().stream().filter(t -> expression.equals(t.getTE())).count());
+		assertEquals(Kse.OK, kse("validate", goalie.toString()).code(), "the edited model still validates");
+
+		byte[] before = Files.readAllBytes(goalie);
+		Run broken = kse("edit-transition", goalie.toString(), from, to, "--expression", "[behavior.State.HeadToBMesage.ballfound()>0]");
+		assertEquals(Kse.INVALID, broken.code(), broken.all());
+		assertTrue(broken.err().contains(": error: expression 1:17: unknown message type 'HeadToBMesage'"), broken.all());
+		assertTrue(broken.err().contains("did you mean 'HeadToBMessage'"), broken.all());
+		assertArrayEquals(before, Files.readAllBytes(goalie), "a refused expression leaves the file as it was");
+
+		Run syntax = kse("edit-transition", goalie.toString(), from, to, "--expression", "[(");
+		assertEquals(Kse.INVALID, syntax.code(), syntax.all());
+		assertArrayEquals(before, Files.readAllBytes(goalie));
+
+		Run cleared = kse("edit-transition", goalie.toString(), from, to, "--expression", "");
+		assertEquals(Kse.OK, cleared.code(), cleared.all());
+		assertEquals(0, StatechartResources.load(goalie).getTransitions().stream().filter(t -> expression.equals(t.getTE())).count());
+	}
+
+	@Test
+	void editTransitionNamesWhatItCannotFindOrTellApart() throws IOException {
+		Model model = Models.model("Twice");
+		Node main = root(model, "Main", "0", "OR");
+		Node start = child(main, "0.1", "0.1", "START");
+		Node work = child(main, "Work", "0.2", "BASIC");
+		Node end = child(main, "0.3", "0.3", "END");
+		transition(model, start, work);
+		transition(model, work, end, "[TimeoutCheck(behavior)]");
+		transition(model, work, end);
+		Path file = directory.resolve("Twice.stct");
+		StatechartResources.save(model, file);
+
+		Run missing = kse("edit-transition", file.toString(), "Work", "Nowhere", "--expression", "");
+		assertEquals(Kse.INVALID, missing.code(), missing.all());
+		assertTrue(missing.err().contains("no state labeled or named 'Nowhere'"), missing.all());
+
+		Run none = kse("edit-transition", file.toString(), "0.3", "Work", "--expression", "");
+		assertEquals(Kse.INVALID, none.code(), none.all());
+		assertTrue(none.err().contains("no transition from 0.3 to 0.2 (Work)"), none.all());
+
+		Run two = kse("edit-transition", file.toString(), "Work", "0.3", "--expression", "[TimeoutCheck(motion)]");
+		assertEquals(Kse.INVALID, two.code(), two.all());
+		assertTrue(two.err().contains("2 transitions from 0.2 (Work) to 0.3; say which with --index:"), two.all());
+		assertTrue(two.err().contains("--index 1: [TimeoutCheck(behavior)]") && two.err().contains("--index 2: (no expression)"), two.all());
+
+		Run second = kse("edit-transition", file.toString(), "Work", "0.3", "--index", "2", "--expression", "[TimeoutCheck(motion)]");
+		assertEquals(Kse.OK, second.code(), second.all());
+		assertEquals("[TimeoutCheck(motion)]", StatechartResources.load(file).getTransitions().get(2).getTE());
+
+		Run usage = kse("edit-transition", file.toString(), "Work", "0.3");
+		assertEquals(Kse.FAILED, usage.code(), usage.all());
+		assertTrue(usage.err().contains("--expression TEXT is required"), usage.all());
+	}
+
 	// ------------------------------------------------------------------ helpers
 
 	private Path copyLegacy(String relative) throws IOException {
