@@ -3,8 +3,9 @@
 # find_package(kse_runtime) and kse_add_statechart(Goalie models/Goalie.stct), which runs
 # `kse generate` at build time. Checks that (1) it builds and plays a match with the Goalie,
 # (2) a build with nothing changed does nothing, (3) a changed model is generated and compiled
-# again, and the program plays the change, (4) a model with an error stops the build with the
-# model's diagnostic, (5) a call named otherwise than the model says which name to use.
+# again, (4) a model with an error stops the build with the model's diagnostic, (5) a call named
+# otherwise than the model says which name to use; and (6) the activity skeletons `kse generate`
+# writes for every example compile and link as written, untouched (issue 18, item 3).
 #   usage: tests/cmake-package/run.sh <runtime-prefix> <out-folder>
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -57,4 +58,33 @@ sed -i 's/kse_add_statechart(Goalie models\/Goalie.stct)/kse_add_statechart(Keep
 if cmake --build "$out/build" -j 2 > "$out/build5.log" 2>&1; then fail "a call named otherwise than its model built"; fi
 grep -q "holds the statechart 'Goalie', not 'Keeper'" "$out/build5.log" || { tail -20 "$out/build5.log"; fail "no word of the model's name"; }
 echo "   call named otherwise: $(grep -m 1 -o "holds the statechart.*" "$out/build5.log")"
+skeletons="$out/skeletons"
+"$here/kse" generate -q "$here"/examples/*/*.stct -o "$skeletons/src" > "$out/skeletons.log"
+cat > "$skeletons/CMakeLists.txt" <<'CMAKE'
+# every example's statechart from the models, each activity as `kse generate` wrote its skeleton
+cmake_minimum_required(VERSION 3.20)
+project(skeletons LANGUAGES CXX)
+find_package(kse_runtime REQUIRED)
+set(targets "")
+foreach(model Goalie Attacker Defender)
+  kse_add_statechart(${model} ${CMAKE_CURRENT_SOURCE_DIR}/models/${model}.stct)
+  list(APPEND targets statechart_${model})
+endforeach()
+file(GLOB folders LIST_DIRECTORIES true ${CMAKE_CURRENT_SOURCE_DIR}/src/activities/*)
+foreach(folder IN LISTS folders)
+  get_filename_component(name ${folder} NAME)
+  add_subdirectory(${folder})
+  list(APPEND targets activity_${name})
+endforeach()
+add_executable(skeleton-match)
+target_link_libraries(skeleton-match PRIVATE kse::sim_main ${targets})
+CMAKE
+mkdir -p "$skeletons/models"
+cp "$here"/examples/*/*.stct "$skeletons/models/"
+cmake -S "$skeletons" -B "$out/skeletons-build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
+  -DKSE_EXECUTABLE="$here/kse" > "$out/skeletons.configure.log" || { cat "$out/skeletons.configure.log"; fail "the skeletons' project did not configure"; }
+cmake --build "$out/skeletons-build" -j 2 > "$out/skeletons.build.log" 2>&1 || { tail -30 "$out/skeletons.build.log"; fail "the generated skeletons do not compile"; }
+"$out/skeletons-build/skeleton-match" --list > "$out/skeletons.list"
+for model in Goalie Attacker Defender; do grep -qx "$model" "$out/skeletons.list" || fail "skeleton-match does not list $model"; done
+echo "   skeletons: the $(ls "$skeletons/src/activities" | wc -l) activities of the three examples compile and link as generated"
 echo "cmake-package: an outside project builds its behaviour with kse_add_statechart"
