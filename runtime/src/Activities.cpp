@@ -106,11 +106,12 @@ bool EngineCore::FinishActivity(BasicState* state) {
 // ---------------------------------------------------------------------------------------------
 
 bool EngineCore::TakeWake() {
-  bool woken;
-  {
+  bool woken = false;
+  // Set only under wake_mutex_: one seen unset here was set, if at all, concurrently with this
+  // look, and waiting (RunUntilStable(), Loop()) looks again under the mutex.
+  if (woken_.load(std::memory_order_acquire)) {
     std::lock_guard<std::mutex> lock(wake_mutex_);
-    woken = woken_;
-    woken_ = false;
+    woken = woken_.exchange(false, std::memory_order_relaxed);
   }
   const kse::messaging::TimePoint now = hub_.GetClock().Now();
   for (kse::messaging::Blackboard* board : blackboards_) {
@@ -150,6 +151,11 @@ bool EngineCore::RunUntilStable(std::size_t max_transitions) {
         return false;
       }
       continue;
+    }
+    if (!pool_) {
+      // Activities run inline: none is running, and only another thread's Start() could have
+      // set woken_ since TakeWake() (and the engine thread it starts then steps).
+      return true;
     }
     std::unique_lock<std::mutex> lock(wake_mutex_);
     if (woken_) {

@@ -1,24 +1,163 @@
 #include "kse/messaging/Blackboard.h"
 
-#include <deque>
-#include <map>
-#include <set>
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <utility>
+
+#include "SameString.h"
 
 namespace kse::messaging {
 
-struct Blackboard::Contents {
-  std::set<std::string> topics;
-  std::map<std::string, Entry> states;
-  std::map<std::string, std::deque<MessagePtr>> signals;
-  std::map<std::string, std::deque<Entry>> data;
+namespace {
+
+// A full signal queue or data history lets go of its oldest message at every new one, a message
+// put there a hundred or a thousand messages ago and long out of the caches: dropping the
+// reference waited for memory. So when one goes, the next to go is asked for: its count (which a
+// make_shared message has just before itself) and its start.
+void WarmUp(const std::shared_ptr<const google::protobuf::Message>& message) noexcept {
+  const char* start = reinterpret_cast<const char*>(message.get());
+  __builtin_prefetch(start - 16);
+  __builtin_prefetch(start);
+}
+
+template <class Entry>
+auto WarmUp(const Entry& entry) noexcept -> decltype(entry.message, void()) {
+  WarmUp(entry.message);
+}
+
+// A queue of messages (a signal queue, a data history, their inboxes) that keeps its storage:
+// a blackboard passes the same few keys' messages through it on every cycle of a robot, and a
+// std::deque allocates and frees a block of nodes as it goes. Capacity is a power of two.
+template <class T>
+class Ring {
+ public:
+  std::size_t size() const noexcept { return size_; }
+  bool empty() const noexcept { return size_ == 0; }
+  T& front() noexcept { return items_[head_]; }
+  T& back() noexcept { return items_[(head_ + size_ - 1) & (items_.size() - 1)]; }
+  const T& operator[](std::size_t i) const noexcept { return items_[(head_ + i) & (items_.size() - 1)]; }
+
+  void push_back(T item) {
+    if (size_ == items_.size()) Grow();
+    items_[(head_ + size_) & (items_.size() - 1)] = std::move(item);
+    ++size_;
+  }
+  /// The oldest item, moved out.
+  T take_front() noexcept {
+    T item = std::move(items_[head_]);
+    items_[head_] = T();
+    head_ = (head_ + 1) & (items_.size() - 1);
+    --size_;
+    if (size_ > 0) WarmUp(items_[head_]);
+    return item;
+  }
+  void pop_front() noexcept { (void)take_front(); }
+
+ private:
+  void Grow() {
+    std::vector<T> items(items_.empty() ? 4 : 2 * items_.size());
+    for (std::size_t i = 0; i < size_; ++i) items[i] = std::move(items_[(head_ + i) & (items_.size() - 1)]);
+    items_.swap(items);
+    head_ = 0;
+  }
+
+  std::vector<T> items_;
+  std::size_t head_ = 0;
+  std::size_t size_ = 0;
+};
+
+// A key (topic and type name) as a lookup compares it: the strings' first bytes in whole words,
+// zeros after their ends, their lengths, and a mix of all of them compared first. Keys whose
+// words and lengths match are the same key when both strings fit in the words (every topic and
+// type name so far), with no string read.
+struct Key {
+  static constexpr std::size_t kTopicWords = 2;
+  static constexpr std::size_t kTypeWords = 3;
+
+  Key(const std::string& topic_name, const std::string& type_name) noexcept
+      : topic_size(topic_name.size()), type_size(type_name.size()) {
+    Fill(topic, kTopicWords, topic_name);
+    Fill(type, kTypeWords, type_name);
+    mix = (topic[0] * 0x9E3779B97F4A7C15ULL) ^ topic[1] ^ (type[0] * 0xC2B2AE3D27D4EB4FULL) ^ type[1] ^
+          (type[2] * 0x165667B19E3779F9ULL) ^ (topic_size << 48) ^ type_size;
+  }
+
+  bool Fits() const noexcept { return topic_size <= sizeof topic && type_size <= sizeof type; }
+  bool operator==(const Key& other) const noexcept {
+    return mix == other.mix && topic_size == other.topic_size && type_size == other.type_size &&
+           std::memcmp(topic, other.topic, sizeof topic) == 0 && std::memcmp(type, other.type, sizeof type) == 0;
+  }
+
+  std::uint64_t mix;
+  std::uint64_t topic[kTopicWords] = {};
+  std::uint64_t type[kTypeWords] = {};
+  std::size_t topic_size;
+  std::size_t type_size;
+
+ private:
+  // Fixed-size loads only: a copy of a length known at run time costs more than the lookup.
+  static void Fill(std::uint64_t* words, std::size_t count, const std::string& text) noexcept {
+    const char* data = text.data();
+    const std::size_t size = text.size();
+    for (std::size_t w = 0; w < count; ++w) {
+      const std::size_t offset = 8 * w;
+      if (size >= offset + 8) {
+        std::memcpy(&words[w], data + offset, 8);
+      } else {
+        if (size > offset) words[w] = Tail(data + offset, size - offset);
+        return;
+      }
+    }
+  }
+  // The first n (1 to 7) bytes, each in a byte of its own: on a little-endian machine two
+  // overlapping loads (their common bytes are the same), elsewhere one byte at a time.
+  static std::uint64_t Tail(const char* p, std::size_t n) noexcept {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    if (n >= 4) {
+      std::uint32_t low;
+      std::uint32_t high;
+      std::memcpy(&low, p, 4);
+      std::memcpy(&high, p + n - 4, 4);
+      return low | (static_cast<std::uint64_t>(high) << (8 * (n - 4)));
+    }
+    const auto byte = [p](std::size_t i) { return static_cast<std::uint64_t>(static_cast<unsigned char>(p[i])); };
+    return byte(0) | (byte(n / 2) << (8 * (n / 2))) | (byte(n - 1) << (8 * (n - 1)));
+#else
+    std::uint64_t word = 0;
+    for (std::size_t i = 0; i < n; ++i) word |= static_cast<std::uint64_t>(static_cast<unsigned char>(p[i])) << (8 * i);
+    return word;
+#endif
+  }
+};
+
+}  // namespace
+
+// Everything a blackboard holds for one topic and type. Slots are made on the first message
+// (or write) of their key and kept: a robot's blackboard sees the same few keys every cycle.
+struct Blackboard::Slot {
+  std::string topic;
+  std::string type_name;
+  Entry state;  // message null: no State message yet
+  Ring<MessagePtr> signals;
+  Ring<Entry> data;
   // The inbox: what arrived since the last ProcessMessages(), bounded as the visible part is
   // (a State message replaces the one waiting before it).
-  std::map<std::string, Entry> inbox_states;
-  std::map<std::string, std::deque<MessagePtr>> inbox_signals;
-  std::map<std::string, std::deque<Entry>> inbox_data;
+  Entry inbox_state;  // message null: none waiting
+  Ring<MessagePtr> inbox_signals;
+  Ring<Entry> inbox_data;
+  bool pending = false;  // listed in Contents::pending
+};
+
+struct Blackboard::Contents {
+  std::vector<std::string> topics;  // subscribed
+  // The slots and, side by side in one small array, the tags of their keys: a lookup scans the
+  // tags and compares strings once.
+  std::vector<std::unique_ptr<Slot>> slots;
+  std::vector<Key> keys;
+  std::vector<Slot*> pending;  // slots with something in their inbox
   std::size_t inbox_size = 0;
-  std::multiset<TimePoint> wakeups;
+  std::vector<TimePoint> wakeups;  // sorted, equal times kept (each is one wake-up)
 };
 
 Blackboard::Blackboard(MessageHub& hub, std::string name) : hub_(hub), name_(std::move(name)) {}
@@ -33,170 +172,203 @@ Blackboard::Contents& Blackboard::Made() {
   return *contents_;
 }
 
-std::string Blackboard::Key(const std::string& topic, const std::string& type_name) {
-  std::string key;
-  key.reserve(topic.size() + 1 + type_name.size());
-  key.append(topic).push_back('\x1f');
-  key.append(type_name);
-  return key;
+Blackboard::Slot* Blackboard::Find(const std::string& topic, const std::string& type_name) const {
+  if (!contents_) return nullptr;
+  // A handful of keys per blackboard, looked up on every read and delivery: a scan of their
+  // tags beats a tree of string comparisons.
+  const Key key(topic, type_name);
+  const auto& keys = contents_->keys;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (keys[i] == key) {
+      Slot* slot = contents_->slots[i].get();
+      if (key.Fits() ||
+          (detail::SameString(slot->type_name, type_name) && detail::SameString(slot->topic, topic))) {
+        return slot;
+      }
+    }
+  }
+  return nullptr;
+}
+
+Blackboard::Slot& Blackboard::SlotFor(const std::string& topic, const std::string& type_name) {
+  if (Slot* slot = Find(topic, type_name)) return *slot;
+  auto slot = std::make_unique<Slot>();
+  slot->topic = topic;
+  slot->type_name = type_name;
+  Contents& c = Made();
+  c.keys.emplace_back(topic, type_name);
+  c.slots.push_back(std::move(slot));
+  return *c.slots.back();
 }
 
 void Blackboard::Subscribe(const std::string& topic) {
   {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!Made().topics.insert(topic).second) {
+    std::lock_guard<SpinLock> lock(mutex_);
+    auto& topics = Made().topics;
+    if (std::find(topics.begin(), topics.end(), topic) != topics.end()) {
       return;
     }
+    topics.push_back(topic);
   }
   // Not under mutex_: the hub delivers retained state into this blackboard (hub, then board lock).
   hub_.Attach(this, topic);
 }
 
 bool Blackboard::IsSubscribed(const std::string& topic) const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return contents_ && contents_->topics.count(topic) != 0;
+  std::lock_guard<SpinLock> lock(mutex_);
+  return contents_ &&
+         std::find(contents_->topics.begin(), contents_->topics.end(), topic) != contents_->topics.end();
 }
 
-void Blackboard::Deliver(const std::string& topic, Kind kind, const MessagePtr& message,
-                         TimePoint time) {
-  std::string key = Key(topic, message->GetTypeName());
-  std::lock_guard<std::mutex> lock(mutex_);
-  Queue(std::move(key), kind, message, time);
+void Blackboard::Deliver(const std::string& topic, const std::string& type_name, Kind kind,
+                         const MessagePtr& message, TimePoint time) {
+  std::lock_guard<SpinLock> lock(mutex_);
+  Queue(SlotFor(topic, type_name), kind, message, time);
 }
 
-void Blackboard::Queue(std::string key, Kind kind, const MessagePtr& message, TimePoint time) {
-  Contents& c = Made();
+void Blackboard::Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
+  Contents& c = *contents_;
   switch (kind) {
-    case Kind::State: {
-      auto [it, added] = c.inbox_states.insert_or_assign(std::move(key), Entry{message, time});
-      (void)it;
-      c.inbox_size += added ? 1 : 0;
+    case Kind::State:
+      if (!slot.inbox_state.message) ++c.inbox_size;
+      slot.inbox_state = Entry{message, time};
       break;
-    }
-    case Kind::Signal: {
-      auto& queue = c.inbox_signals[std::move(key)];
-      if (queue.size() >= kSignalQueueLimit) {
-        queue.pop_front();
+    case Kind::Signal:
+      if (slot.inbox_signals.size() >= kSignalQueueLimit) {
+        slot.inbox_signals.pop_front();
         --c.inbox_size;
       }
-      queue.push_back(message);
+      slot.inbox_signals.push_back(message);
       ++c.inbox_size;
       break;
-    }
-    case Kind::Data: {
-      auto& history = c.inbox_data[std::move(key)];
-      if (history.size() >= kDataHistoryLimit) {
-        history.pop_front();
+    case Kind::Data:
+      if (slot.inbox_data.size() >= kDataHistoryLimit) {
+        slot.inbox_data.pop_front();
         --c.inbox_size;
       }
-      history.push_back(Entry{message, time});
+      slot.inbox_data.push_back(Entry{message, time});
       ++c.inbox_size;
       break;
-    }
+  }
+  if (!slot.pending) {
+    slot.pending = true;
+    c.pending.push_back(&slot);
   }
 }
 
-void Blackboard::Apply(std::string key, Kind kind, const MessagePtr& message, TimePoint time) {
-  Contents& c = Made();
+void Blackboard::Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
   switch (kind) {
     case Kind::State:
-      c.states[std::move(key)] = Entry{message, time};
+      slot.state = Entry{message, time};
       break;
-    case Kind::Signal: {
-      auto& queue = c.signals[std::move(key)];
-      if (queue.size() >= kSignalQueueLimit) {
-        queue.pop_front();
+    case Kind::Signal:
+      if (slot.signals.size() >= kSignalQueueLimit) {
+        slot.signals.pop_front();
       }
-      queue.push_back(message);
+      slot.signals.push_back(message);
       break;
-    }
-    case Kind::Data: {
-      auto& history = c.data[std::move(key)];
-      if (history.size() >= kDataHistoryLimit) {
-        history.pop_front();
+    case Kind::Data:
+      if (slot.data.size() >= kDataHistoryLimit) {
+        slot.data.pop_front();
       }
-      history.push_back(Entry{message, time});
+      slot.data.push_back(Entry{message, time});
       break;
-    }
   }
 }
 
 void Blackboard::ProcessMessages() {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<SpinLock> lock(mutex_);
   if (!contents_ || contents_->inbox_size == 0) {
     return;
   }
   Contents& c = *contents_;
-  for (auto& [key, entry] : c.inbox_states) {
-    c.states[key] = std::move(entry);
-  }
-  for (auto& [key, queue] : c.inbox_signals) {
-    for (auto& message : queue) {
-      Apply(key, Kind::Signal, message, TimePoint());
+  // Keys are independent of each other: in each, the order of arrival is kept.
+  for (Slot* slot : c.pending) {
+    if (slot->inbox_state.message) {
+      slot->state = std::move(slot->inbox_state);
+      slot->inbox_state = Entry{};
     }
-  }
-  for (auto& [key, history] : c.inbox_data) {
-    for (auto& entry : history) {
-      Apply(key, Kind::Data, entry.message, entry.time);
+    while (!slot->inbox_signals.empty()) {
+      if (slot->signals.size() >= kSignalQueueLimit) slot->signals.pop_front();
+      slot->signals.push_back(slot->inbox_signals.take_front());
     }
+    while (!slot->inbox_data.empty()) {
+      if (slot->data.size() >= kDataHistoryLimit) slot->data.pop_front();
+      slot->data.push_back(slot->inbox_data.take_front());
+    }
+    slot->pending = false;
   }
-  c.inbox_states.clear();
-  c.inbox_signals.clear();
-  c.inbox_data.clear();
+  c.pending.clear();
   c.inbox_size = 0;
 }
 
 std::size_t Blackboard::PendingMessages() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<SpinLock> lock(mutex_);
   return contents_ ? contents_->inbox_size : 0;
 }
 
+void Blackboard::ReadStateTo(const std::string& topic, const std::string& type_name, Sink sink,
+                             void* out) const {
+  std::lock_guard<SpinLock> lock(mutex_);
+  const Slot* slot = Find(topic, type_name);
+  if (slot != nullptr && slot->state.message) sink(slot->state.message, out);
+}
+
+void Blackboard::ReadSignalTo(const std::string& topic, const std::string& type_name, Sink sink,
+                              void* out) {
+  std::lock_guard<SpinLock> lock(mutex_);
+  Slot* slot = Find(topic, type_name);
+  if (slot == nullptr || slot->signals.empty()) return;
+  sink(slot->signals.front(), out);
+  slot->signals.pop_front();
+}
+
+void Blackboard::ReadDataTo(const std::string& topic, const std::string& type_name, Sink sink,
+                            void* out) const {
+  std::lock_guard<SpinLock> lock(mutex_);
+  Slot* slot = Find(topic, type_name);
+  if (slot != nullptr && !slot->data.empty()) sink(slot->data.back().message, out);
+}
+
+namespace {
+
+void Keep(const Blackboard::MessagePtr& found, void* out) {
+  *static_cast<Blackboard::MessagePtr*>(out) = found;
+}
+
+}  // namespace
+
 Blackboard::MessagePtr Blackboard::ReadStateMessage(const std::string& topic,
                                                     const std::string& type_name) const {
-  const std::string key = Key(topic, type_name);
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!contents_) return nullptr;
-  auto it = contents_->states.find(key);
-  return it == contents_->states.end() ? nullptr : it->second.message;
+  MessagePtr message;
+  ReadStateTo(topic, type_name, &Keep, &message);
+  return message;
 }
 
 Blackboard::MessagePtr Blackboard::ReadSignalMessage(const std::string& topic,
                                                      const std::string& type_name) {
-  const std::string key = Key(topic, type_name);
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!contents_) return nullptr;
-  auto it = contents_->signals.find(key);
-  if (it == contents_->signals.end() || it->second.empty()) {
-    return nullptr;
-  }
-  MessagePtr message = std::move(it->second.front());
-  it->second.pop_front();
+  MessagePtr message;
+  ReadSignalTo(topic, type_name, &Keep, &message);
   return message;
 }
 
 Blackboard::MessagePtr Blackboard::ReadDataMessage(const std::string& topic,
                                                    const std::string& type_name) const {
-  const std::string key = Key(topic, type_name);
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!contents_) return nullptr;
-  auto it = contents_->data.find(key);
-  if (it == contents_->data.end() || it->second.empty()) {
-    return nullptr;
-  }
-  return it->second.back().message;
+  MessagePtr message;
+  ReadDataTo(topic, type_name, &Keep, &message);
+  return message;
 }
 
 std::vector<Stamped<google::protobuf::Message>> Blackboard::ReadDataHistoryMessages(
     const std::string& topic, const std::string& type_name, TimePoint since) const {
-  const std::string key = Key(topic, type_name);
   std::vector<Stamped<google::protobuf::Message>> out;
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!contents_) return out;
-  auto it = contents_->data.find(key);
-  if (it == contents_->data.end()) {
+  std::lock_guard<SpinLock> lock(mutex_);
+  const Slot* slot = Find(topic, type_name);
+  if (slot == nullptr) {
     return out;
   }
-  for (const Entry& entry : it->second) {
+  for (std::size_t i = 0; i < slot->data.size(); ++i) {
+    const Entry& entry = slot->data[i];
     if (entry.time >= since) {
       out.push_back(Stamped<google::protobuf::Message>{entry.time, entry.message});
     }
@@ -206,23 +378,22 @@ std::vector<Stamped<google::protobuf::Message>> Blackboard::ReadDataHistoryMessa
 
 std::size_t Blackboard::PendingSignals(const std::string& topic,
                                        const std::string& type_name) const {
-  const std::string key = Key(topic, type_name);
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!contents_) return 0;
-  auto it = contents_->signals.find(key);
-  return it == contents_->signals.end() ? 0 : it->second.size();
+  std::lock_guard<SpinLock> lock(mutex_);
+  const Slot* slot = Find(topic, type_name);
+  return slot == nullptr ? 0 : slot->signals.size();
 }
 
 void Blackboard::PublishMessage(const std::string& topic, Kind kind, MessagePtr message) {
   if (!message) {
     return;
   }
+  const std::string& type_name = message->GetDescriptor()->full_name();
+  const TimePoint now = Now();
   {
-    std::string key = Key(topic, message->GetTypeName());
-    std::lock_guard<std::mutex> lock(mutex_);
-    Apply(std::move(key), kind, message, Now());
+    std::lock_guard<SpinLock> lock(mutex_);
+    Apply(SlotFor(topic, type_name), kind, message, now);
   }
-  hub_.Publish(topic, kind, std::move(message), this);
+  hub_.Publish(topic, type_name, kind, std::move(message), this);
 }
 
 void Blackboard::PublishCopy(const std::string& topic, Kind kind,
@@ -233,27 +404,36 @@ void Blackboard::PublishCopy(const std::string& topic, Kind kind,
 }
 
 void Blackboard::ScheduleWakeup(TimePoint time) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  Made().wakeups.insert(time);
+  std::lock_guard<SpinLock> lock(mutex_);
+  auto& wakeups = Made().wakeups;
+  wakeups.insert(std::upper_bound(wakeups.begin(), wakeups.end(), time), time);
+  next_wakeup_.store(wakeups.front().time_since_epoch().count(), std::memory_order_release);
 }
 
 std::optional<TimePoint> Blackboard::NextWakeup() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<SpinLock> lock(mutex_);
   if (!contents_ || contents_->wakeups.empty()) {
     return std::nullopt;
   }
-  return *contents_->wakeups.begin();
+  return contents_->wakeups.front();
 }
 
 bool Blackboard::TakeDueWakeups(TimePoint now) {
-  std::lock_guard<std::mutex> lock(mutex_);
+  // None due yet (the usual answer) is told without the lock. A wake-up scheduled meanwhile by
+  // another thread is taken at the next call, as if it had come just after this one.
+  if (now.time_since_epoch().count() < next_wakeup_.load(std::memory_order_acquire)) {
+    return false;
+  }
+  std::lock_guard<SpinLock> lock(mutex_);
   if (!contents_) return false;
   auto& wakeups = contents_->wakeups;
-  auto end = wakeups.upper_bound(now);
+  auto end = std::upper_bound(wakeups.begin(), wakeups.end(), now);
   if (end == wakeups.begin()) {
     return false;
   }
   wakeups.erase(wakeups.begin(), end);
+  next_wakeup_.store(wakeups.empty() ? kNoWakeup : wakeups.front().time_since_epoch().count(),
+                     std::memory_order_release);
   return true;
 }
 

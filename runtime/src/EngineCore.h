@@ -175,7 +175,9 @@ class EngineCore {
   std::mutex wake_mutex_;
   std::condition_variable wake_cv_;
   std::uint64_t wake_generation_ = 0;  // any change: a wake, an activity's end, Stop()
-  bool woken_ = false;                 // a reason to re-evaluate
+  // A reason to re-evaluate. Written under wake_mutex_; atomic so that TakeWake() can see that
+  // there is none without taking the mutex (the common case of a RunUntilStable() per cycle).
+  std::atomic<bool> woken_{false};
   std::vector<std::uint64_t> live_loops_;  // generations of engine threads not ended yet
   std::atomic<bool> abandoned_{false};     // destroyed while calls still ran (set under wake_mutex_)
 

@@ -31,9 +31,10 @@ void InitTimeout(Blackboard& blackboard, const std::string& topic) {
 
 void SetTimeout(Blackboard& blackboard, const std::string& topic, std::chrono::milliseconds after) {
   const kse::messaging::TimePoint wakeup = blackboard.Now() + after;
-  TimeoutMsg message;
-  message.set_wakeup(std::to_string(Microseconds(wakeup)));
-  blackboard.Publish(topic, Kind::State, message);
+  // Made as the message to publish, not copied into one: a timer is set on most steps.
+  auto message = std::make_shared<TimeoutMsg>();
+  message->set_wakeup(std::to_string(Microseconds(wakeup)));
+  blackboard.PublishMessage(topic, Kind::State, std::move(message));
   blackboard.ScheduleWakeup(wakeup);
 }
 

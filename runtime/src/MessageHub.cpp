@@ -3,15 +3,50 @@
 #include <algorithm>
 #include <utility>
 
+#include <google/protobuf/descriptor.h>
 #include <google/protobuf/message.h>
 
+#include "SameString.h"
 #include "kse/messaging/Blackboard.h"
 
 namespace kse::messaging {
 
+// A process has a handful of topics and each robot publishes on them every cycle: a scan of a
+// short vector by tag, no string built per publish.
+struct MessageHub::Topic {
+  struct Retained {
+    std::string type_name;
+    std::shared_ptr<const google::protobuf::Message> message;
+    TimePoint time;
+    const Blackboard* origin;  // never handed back to the blackboard that published it
+  };
+
+  explicit Topic(const std::string& topic) : name(topic), tag(topic) {}
+
+  std::string name;
+  detail::Tag tag;
+  std::vector<Blackboard*> subscribers;
+  std::vector<Retained> retained;  // the last State message of each type
+};
+
 MessageHub::MessageHub(const Clock& clock) : clock_(clock) {}
 
 MessageHub::~MessageHub() = default;
+
+MessageHub::Topic* MessageHub::FindTopic(const std::string& topic) const {
+  const detail::Tag tag(topic);
+  for (const auto& entry : topics_) {
+    if (entry->tag == tag && detail::SameString(entry->name, topic)) return entry.get();
+  }
+  return nullptr;
+}
+
+MessageHub::Topic& MessageHub::TopicFor(const std::string& topic) {
+  if (Topic* found = FindTopic(topic)) return *found;
+  auto entry = std::make_unique<Topic>(topic);
+  topics_.push_back(std::move(entry));
+  return *topics_.back();
+}
 
 void MessageHub::Publish(const std::string& topic, Kind kind,
                          std::shared_ptr<const google::protobuf::Message> message,
@@ -19,21 +54,40 @@ void MessageHub::Publish(const std::string& topic, Kind kind,
   if (!message) {
     return;
   }
+  const std::string& type_name = message->GetDescriptor()->full_name();
+  Publish(topic, type_name, kind, std::move(message), origin);
+}
+
+void MessageHub::Publish(const std::string& topic, const std::string& type_name, Kind kind,
+                         std::shared_ptr<const google::protobuf::Message> message,
+                         const Blackboard* origin) {
   {
-    std::lock_guard<std::mutex> lock(mutex_);
+    std::lock_guard<SpinLock> lock(mutex_);
     const TimePoint now = clock_.Now();
     ++published_;
-    if (kind == Kind::State) {
-      retained_[topic][message->GetTypeName()] = Retained{message, now, origin};
-    }
-    auto it = subscribers_.find(topic);
-    if (it != subscribers_.end()) {
-      for (Blackboard* board : it->second) {
+    Topic* entry = kind == Kind::State ? &TopicFor(topic) : FindTopic(topic);
+    if (entry != nullptr) {
+      for (Blackboard* board : entry->subscribers) {
         if (board != origin) {
-          board->Deliver(topic, kind, message, now);
+          board->Deliver(topic, type_name, kind, message, now);
+        }
+      }
+      if (kind == Kind::State) {
+        // Kept last, so that the message moves in rather than being shared once more.
+        auto retained = std::find_if(entry->retained.begin(), entry->retained.end(),
+                                     [&](const Topic::Retained& r) { return detail::SameString(r.type_name, type_name); });
+        if (retained == entry->retained.end()) {
+          entry->retained.push_back(Topic::Retained{type_name, std::move(message), now, origin});
+        } else {
+          retained->message = std::move(message);
+          retained->time = now;
+          retained->origin = origin;
         }
       }
     }
+  }
+  if (!has_listeners_.load(std::memory_order_acquire)) {
+    return;
   }
   std::lock_guard<std::mutex> lock(listeners_mutex_);
   for (auto& entry : listeners_) {
@@ -45,6 +99,7 @@ MessageHub::ListenerId MessageHub::AddListener(Listener listener) {
   std::lock_guard<std::mutex> lock(listeners_mutex_);
   const ListenerId id = next_listener_++;
   listeners_.emplace_back(id, std::move(listener));
+  has_listeners_.store(true, std::memory_order_release);
   return id;
 }
 
@@ -53,42 +108,40 @@ void MessageHub::RemoveListener(ListenerId id) {
   listeners_.erase(std::remove_if(listeners_.begin(), listeners_.end(),
                                   [id](const auto& entry) { return entry.first == id; }),
                    listeners_.end());
+  has_listeners_.store(!listeners_.empty(), std::memory_order_release);
 }
 
 std::size_t MessageHub::SubscriberCount(const std::string& topic) const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  auto it = subscribers_.find(topic);
-  return it == subscribers_.end() ? 0 : it->second.size();
+  std::lock_guard<SpinLock> lock(mutex_);
+  const Topic* entry = FindTopic(topic);
+  return entry == nullptr ? 0 : entry->subscribers.size();
 }
 
 std::size_t MessageHub::PublishedCount() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<SpinLock> lock(mutex_);
   return published_;
 }
 
 void MessageHub::Attach(Blackboard* board, const std::string& topic) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  auto& boards = subscribers_[topic];
+  std::lock_guard<SpinLock> lock(mutex_);
+  Topic& entry = TopicFor(topic);
+  auto& boards = entry.subscribers;
   if (std::find(boards.begin(), boards.end(), board) != boards.end()) {
     return;
   }
   boards.push_back(board);
-  auto it = retained_.find(topic);
-  if (it != retained_.end()) {
-    for (const auto& entry : it->second) {
-      if (entry.second.origin != board) {
-        board->Deliver(topic, Kind::State, entry.second.message, entry.second.time);
-      }
+  for (const Topic::Retained& retained : entry.retained) {
+    if (retained.origin != board) {
+      board->Deliver(topic, retained.type_name, Kind::State, retained.message, retained.time);
     }
   }
 }
 
 void MessageHub::Detach(Blackboard* board) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  for (auto it = subscribers_.begin(); it != subscribers_.end();) {
-    auto& boards = it->second;
+  std::lock_guard<SpinLock> lock(mutex_);
+  for (auto& entry : topics_) {
+    auto& boards = entry->subscribers;
     boards.erase(std::remove(boards.begin(), boards.end(), board), boards.end());
-    it = boards.empty() ? subscribers_.erase(it) : std::next(it);
   }
 }
 

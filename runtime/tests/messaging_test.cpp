@@ -4,7 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <thread>
+
+#include <google/protobuf/dynamic_message.h>
 
 #include "test_support.h"
 
@@ -318,6 +321,75 @@ TEST_F(Messaging, ConcurrentPublishersAndReaders) {
   while (board.ReadSignal<HeadToBMessage>("worldstate")) ++signals;
   EXPECT_EQ(signals.load(), kThreads * kEach);
   EXPECT_EQ(hub.PublishedCount(), static_cast<std::size_t>(3 * kThreads * kEach));
+}
+
+TEST_F(Messaging, KeysThatBeginAlikeStayApart) {
+  // A lookup first compares the first 16 bytes of topics and 24 of type names with their
+  // lengths; longer keys that agree there must still be told apart by the whole string.
+  Blackboard board(hub);
+  const std::string ball = "robot/behaviour/ball";
+  const std::string goal = "robot/behaviour/goal";
+  const std::string longer = "robot/behaviour/goal/near";
+  for (const auto* topic : {&ball, &goal, &longer}) board.Subscribe(*topic);
+  board.Subscribe("b");
+  hub.Publish(ball, Kind::State, Head(1));
+  hub.Publish(goal, Kind::State, Head(2));
+  hub.Publish(longer, Kind::State, Head(3));
+  hub.Publish("b", Kind::State, Head(4));
+  hub.Publish(goal, Kind::Signal, Head(5));
+  hub.Publish(ball, Kind::Data, Head(6));
+  board.ProcessMessages();
+  EXPECT_EQ(board.ReadState<HeadToBMessage>(ball)->ballfound(), 1);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>(goal)->ballfound(), 2);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>(longer)->ballfound(), 3);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("b")->ballfound(), 4);
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("robot/behaviour/gold"), nullptr);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>(ball), nullptr);
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>(goal)->ballfound(), 5);
+  EXPECT_EQ(board.ReadData<HeadToBMessage>(ball)->ballfound(), 6);
+  EXPECT_EQ(board.ReadData<HeadToBMessage>(goal), nullptr);
+  EXPECT_EQ(board.PendingSignals(goal, "HeadToBMessage"), 0U);
+  EXPECT_EQ(board.ReadStateMessage(longer, "HeadToBMessage") != nullptr, true);
+  EXPECT_EQ(board.ReadStateMessage(longer, "HeadToBMessag"), nullptr) << "a type name is matched whole";
+}
+
+TEST_F(Messaging, AMessageOfAnotherClassWithTheSameNameIsNotReadAsThatClass) {
+  // Typed reads skip dynamic_cast for a message of exactly the class asked for; a dynamic
+  // message of the same protobuf type is kept under the same key but is not that class.
+  google::protobuf::DynamicMessageFactory factory;
+  std::shared_ptr<google::protobuf::Message> dynamic(factory.GetPrototype(HeadToBMessage::descriptor())->New());
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  hub.Publish("behavior", Kind::State, dynamic);
+  board.ProcessMessages();
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(board.ReadStateMessage("behavior", "HeadToBMessage"), dynamic);
+  hub.Publish("behavior", Kind::State, std::shared_ptr<const HeadToBMessage>(Head(7)));
+  board.ProcessMessages();
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 7) << "the same key, replaced";
+}
+
+TEST_F(Messaging, WakeupsScheduledMeanwhileOnAnotherThreadAreTakenLater) {
+  // TakeDueWakeups answers "none due yet" without the lock; what another thread schedules in
+  // the meantime must be taken by a later call, never lost.
+  Blackboard board(hub);
+  constexpr int kWakeups = 2000;
+  std::atomic<int> taken{0};
+  std::atomic<bool> done{false};
+  std::thread taker([&] {
+    while (!done.load() || board.NextWakeup().has_value()) {
+      if (board.TakeDueWakeups(clock.Now())) ++taken;
+    }
+  });
+  for (int i = 0; i < kWakeups; ++i) {
+    board.ScheduleWakeup(clock.Now() - milliseconds(i % 3));  // due at once
+    if (i % 100 == 0) std::this_thread::yield();
+  }
+  done.store(true);
+  taker.join();
+  EXPECT_FALSE(board.NextWakeup().has_value());
+  EXPECT_FALSE(board.TakeDueWakeups(clock.Now()));
+  EXPECT_GE(taken.load(), 1);
 }
 
 }  // namespace

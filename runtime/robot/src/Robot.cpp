@@ -1,5 +1,7 @@
 #include <kse/robot/Robot.h>
 
+#include <atomic>
+#include <deque>
 #include <stdexcept>
 #include <utility>
 
@@ -9,8 +11,55 @@ namespace kse::robot {
 
 using messaging::Kind;
 
+namespace {
+
+// The messages of one kind a robot publishes, oldest first. The oldest is used again, cleared,
+// once the robot's is the only reference left: the blackboards keep the last State message (and
+// a Data history of 100 entries), then let it go. A message someone keeps is left to them.
+template <class T>
+class Recycled {
+public:
+	explicit Recycled(std::size_t keep) : keep_(keep) {}
+
+	/** An empty message to publish next: the oldest one when it is free again, else a new one. */
+	T& Next() {
+		if (!published_.empty() && published_.front().use_count() == 1) {
+			// use_count() is a relaxed load: the fence orders whatever the last other owner did
+			// with the message before it let go (a release, in the count) before our writes.
+			// (ThreadSanitizer does not model fences and warns about them; the owners a robot's
+			// messages have are on its own thread, its activities running inline.)
+#ifndef __SANITIZE_THREAD__
+			std::atomic_thread_fence(std::memory_order_acquire);
+#endif
+			published_.push_back(std::move(published_.front()));
+			published_.pop_front();
+			published_.back()->Clear();
+		} else {
+			published_.push_back(std::make_shared<T>());
+			if (published_.size() > keep_) published_.pop_front();
+		}
+		return *published_.back();
+	}
+
+	/** The message Next() gave, to publish. */
+	std::shared_ptr<const T> Last() const { return published_.back(); }
+
+private:
+	std::size_t keep_;
+	std::deque<std::shared_ptr<T>> published_;
+};
+
+}  // namespace
+
+struct Robot::Recycling {
+	// A Data history keeps the last 100 WorldInfo messages (and the inbox one more).
+	Recycled<WorldInfo> world{messaging::Blackboard::kDataHistoryLimit + 8};
+	Perception last;  // what the last State messages said
+	bool published_once = false;
+};
+
 Robot::Robot(const std::string& behaviour, const messaging::Clock& clock, statechart_engine::Reporter reporter)
-	: behaviour_(behaviour), hub_(clock), motion_(hub_, "motion") {
+	: behaviour_(behaviour), hub_(clock), motion_(hub_, "motion"), recycling_(std::make_unique<Recycling>()) {
 	motion_.Subscribe("motion");
 	statechart_engine::Options options;
 	options.inline_activities = true;
@@ -22,49 +71,76 @@ Robot::Robot(const std::string& behaviour, const messaging::Clock& clock, statec
 	statechart_->Chart().Activate();
 }
 
-MotionCommands Robot::Step(const Perception& perception) {
-	auto game = std::make_shared<GameStateMessage>();
-	game->set_player_state(perception.player_state);
-	game->set_game_state(perception.game_state);
-	game->set_team_number(perception.team_number);
-	game->set_team_color(perception.team_color);
-	game->set_player_number(perception.player_number);
-	game->set_kickoff(perception.kickoff);
-	game->set_our_score(perception.our_score);
-	game->set_otherteam_score(perception.their_score);
-	game->set_secs_remaining(perception.secs_remaining);
-	hub_.Publish("worldstate", Kind::State, game);
+Robot::~Robot() = default;
 
-	auto world = std::make_shared<WorldInfo>();
-	auto* me = world->mutable_myposition();
+namespace {
+
+bool SameGame(const Perception& a, const Perception& b) {
+	return a.player_state == b.player_state && a.game_state == b.game_state && a.team_number == b.team_number &&
+	       a.team_color == b.team_color && a.player_number == b.player_number && a.kickoff == b.kickoff &&
+	       a.our_score == b.our_score && a.their_score == b.their_score && a.secs_remaining == b.secs_remaining;
+}
+
+bool SamePose(const Pose& a, const Pose& b) { return a.x == b.x && a.y == b.y && a.theta == b.theta; }
+
+}  // namespace
+
+MotionCommands Robot::Step(const Perception& perception) {
+	// A State message stands until the next one: one equal to the last would change nothing a
+	// reader sees, so it is published only when it differs (most cycles, none does).
+	const Perception* last = recycling_->published_once ? &recycling_->last : nullptr;
+	if (!last || !SameGame(perception, *last)) {
+		auto game = std::make_shared<GameStateMessage>();
+		game->set_player_state(perception.player_state);
+		game->set_game_state(perception.game_state);
+		game->set_team_number(perception.team_number);
+		game->set_team_color(perception.team_color);
+		game->set_player_number(perception.player_number);
+		game->set_kickoff(perception.kickoff);
+		game->set_our_score(perception.our_score);
+		game->set_otherteam_score(perception.their_score);
+		game->set_secs_remaining(perception.secs_remaining);
+		hub_.Publish("worldstate", Kind::State, std::shared_ptr<const GameStateMessage>(std::move(game)));
+	}
+
+	WorldInfo& world = recycling_->world.Next();
+	auto* me = world.mutable_myposition();
 	me->set_x(perception.estimate.x);
 	me->set_y(perception.estimate.y);
 	me->set_phi(perception.estimate.theta);
 	me->set_confidence(perception.confidence);
 	if (perception.ball.seen) {
-		auto* ball = world->add_balls();
+		auto* ball = world.add_balls();
 		ball->set_relativex(perception.ball.x);
 		ball->set_relativey(perception.ball.y);
 		ball->set_relativexspeed(perception.ball.vx);
 		ball->set_relativeyspeed(perception.ball.vy);
 	}
-	hub_.Publish("worldstate", Kind::Data, world);
+	hub_.Publish("worldstate", Kind::Data, recycling_->world.Last());
 
-	auto head = std::make_shared<HeadToBMessage>();
-	head->set_ballfound(perception.ball.seen ? 1 : 0);
-	head->set_calibrated(1);
-	hub_.Publish("behavior", Kind::State, head);
+	if (!last || perception.ball.seen != last->ball.seen) {
+		auto head = std::make_shared<HeadToBMessage>();
+		head->set_ballfound(perception.ball.seen ? 1 : 0);
+		head->set_calibrated(1);
+		hub_.Publish("behavior", Kind::State, std::shared_ptr<const HeadToBMessage>(std::move(head)));
+	}
 
-	auto position = std::make_shared<PositionMessage>();
-	position->set_posx(perception.ready_position.x);
-	position->set_posy(perception.ready_position.y);
-	position->set_theta(perception.ready_position.theta);
-	hub_.Publish("behavior", Kind::State, position);
+	if (!last || !SamePose(perception.ready_position, last->ready_position)) {
+		auto position = std::make_shared<PositionMessage>();
+		position->set_posx(perception.ready_position.x);
+		position->set_posy(perception.ready_position.y);
+		position->set_theta(perception.ready_position.theta);
+		hub_.Publish("behavior", Kind::State, std::shared_ptr<const PositionMessage>(std::move(position)));
+	}
+	recycling_->last = perception;
+	recycling_->published_once = true;
 
 	statechart_->Chart().RunUntilStable();
 
-	motion_.ProcessMessages();
 	MotionCommands commands;
+	// This robot reads every motion command of each cycle: with nothing new there is nothing to read.
+	if (motion_.PendingMessages() == 0) return commands;
+	motion_.ProcessMessages();
 	while (auto walk = motion_.ReadSignal<MotionWalkMessage>("motion")) {
 		if (walk->command() == "setWalkTargetVelocity" && walk->parameter_size() >= 3) {
 			commands.walk = true;

@@ -119,4 +119,119 @@ TEST(Robot, AnUnknownBehaviourIsRefused) {
 	EXPECT_THROW(kse::robot::Robot("NoSuchBehaviour", clock), std::invalid_argument);
 }
 
+// Subscribes the statechart's blackboard to what a robot publishes and never refreshes it, so
+// that a test sees exactly what arrived in its inbox.
+class Listen : public statechart_engine::IActivity {
+public:
+	void UserInit() override {
+		_blk->Subscribe("worldstate");
+		_blk->Subscribe("behavior");
+	}
+	int Execute() override { return 0; }
+	std::string GetName() override { return "Listen"; }
+};
+
+class ListenerChart : public statechart_engine::IStatechart {
+public:
+	ListenerChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_listener", hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* listen = chart_.Add<BasicState>("Node_Listen", &chart_, std::make_unique<Listen>());
+		chart_.AddTransition(start, listen);
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
+const statechart_engine::StatechartRegistrar<ListenerChart> listener_registrar("RobotTestListener");
+
+kse::robot::Perception InGame() {
+	kse::robot::Perception p;
+	p.player_state = 3;
+	p.game_state = 3;
+	p.team_number = 7;
+	p.player_number = 2;
+	p.secs_remaining = 600;
+	p.estimate = {1.0f, -2.0f, 0.5f};
+	p.ready_position = {-3.0f, 1.0f, 0.0f};
+	return p;
+}
+
+TEST(Robot, StateMessagesArePublishedWhenTheyChangeAndWorldInfoEveryCycle) {
+	kse::messaging::ManualClock clock;
+	kse::robot::Robot robot("RobotTestListener", clock);
+	auto& board = robot.Chart().RootBlackboard();
+	kse::robot::Perception p = InGame();
+	robot.Step(p);
+	EXPECT_EQ(board.PendingMessages(), 4U) << "the first cycle: GameStateMessage, WorldInfo, HeadToBMessage, PositionMessage";
+	board.ProcessMessages();
+	EXPECT_EQ(board.ReadState<GameStateMessage>("worldstate")->secs_remaining(), 600);
+	EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 0);
+	EXPECT_FLOAT_EQ(board.ReadState<PositionMessage>("behavior")->posx(), -3.0f);
+
+	p.estimate.x = 1.5f;
+	robot.Step(p);
+	EXPECT_EQ(board.PendingMessages(), 1U) << "only the WorldInfo: no State message changed";
+	board.ProcessMessages();
+	EXPECT_FLOAT_EQ(board.ReadData<WorldInfo>("worldstate")->myposition().x(), 1.5f);
+	EXPECT_EQ(board.ReadState<GameStateMessage>("worldstate")->secs_remaining(), 600) << "a State message stands";
+
+	p.secs_remaining = 599;
+	p.ball.seen = true;
+	p.ball.x = 0.4f;
+	robot.Step(p);
+	EXPECT_EQ(board.PendingMessages(), 3U) << "GameStateMessage and HeadToBMessage changed";
+	board.ProcessMessages();
+	EXPECT_EQ(board.ReadState<GameStateMessage>("worldstate")->secs_remaining(), 599);
+	EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 1);
+	ASSERT_EQ(board.ReadData<WorldInfo>("worldstate")->balls_size(), 1);
+	EXPECT_FLOAT_EQ(board.ReadData<WorldInfo>("worldstate")->balls(0).relativex(), 0.4f);
+
+	p.ready_position.y = -1.0f;
+	robot.Step(p);
+	EXPECT_EQ(board.PendingMessages(), 2U) << "PositionMessage changed";
+	board.ProcessMessages();
+	EXPECT_FLOAT_EQ(board.ReadState<PositionMessage>("behavior")->posy(), -1.0f);
+}
+
+TEST(Robot, WorldInfoMessagesInTheHistoryKeepTheirValuesWhileTheRobotReusesOldOnes) {
+	// The robot reuses a WorldInfo once nobody else holds it: what a blackboard still keeps
+	// (the Data history of 100) must never change under it.
+	kse::messaging::ManualClock clock;
+	kse::robot::Robot robot("RobotTestListener", clock);
+	auto& board = robot.Chart().RootBlackboard();
+	kse::robot::Perception p = InGame();
+	std::shared_ptr<const WorldInfo> kept;
+	for (int cycle = 0; cycle < 400; ++cycle) {
+		p.estimate.x = static_cast<float>(cycle);
+		p.ball.seen = cycle % 3 == 0;
+		p.ball.x = static_cast<float>(cycle);
+		robot.Step(p);
+		clock.Advance(std::chrono::milliseconds(30));
+		if (cycle % 7 == 0) board.ProcessMessages();  // a statechart refreshes now and then
+		if (cycle == 150) {
+			board.ProcessMessages();
+			kept = board.ReadData<WorldInfo>("worldstate");  // held by a reader for the rest of the test
+		}
+	}
+	board.ProcessMessages();
+	const auto history = board.ReadDataHistory<WorldInfo>("worldstate", kse::messaging::TimePoint{});
+	ASSERT_EQ(history.size(), kse::messaging::Blackboard::kDataHistoryLimit);
+	for (std::size_t i = 0; i < history.size(); ++i) {
+		const int cycle = 300 + static_cast<int>(i);
+		const WorldInfo& info = *history[i].message;
+		EXPECT_FLOAT_EQ(info.myposition().x(), static_cast<float>(cycle));
+		ASSERT_EQ(info.balls_size(), cycle % 3 == 0 ? 1 : 0) << "cycle " << cycle;
+		if (cycle % 3 == 0) EXPECT_FLOAT_EQ(info.balls(0).relativex(), static_cast<float>(cycle));
+	}
+	ASSERT_NE(kept, nullptr);
+	EXPECT_FLOAT_EQ(kept->myposition().x(), 150.0f) << "a message someone holds is not reused";
+	ASSERT_EQ(kept->balls_size(), 1);
+	EXPECT_FLOAT_EQ(kept->balls(0).relativex(), 150.0f);
+}
+
 }  // namespace

@@ -71,7 +71,7 @@ Match::Match(MatchConfig config)
 				player->robot = std::make_unique<robot::Robot>(player_config.behaviour, clock_, reports_.For(player->id, player_config.behaviour));
 				Player* raw = player.get();
 				player->robot->Chart().SetObserver([this, raw](const statechart_engine::TransitionSegmentBase& transition) {
-					raw->taken.push_back(transition.Name());
+					raw->taken.push_back(&transition.Name());
 					raw->last_transition = Time();
 				});
 			}
@@ -105,11 +105,16 @@ Pose2 Match::ReadyPose(std::size_t robot) const {
 	return TeamFrame(team, pose);
 }
 
-std::vector<Pose2> Match::ReadyPoses() const {
-	std::vector<Pose2> poses;
-	poses.reserve(players_.size());
-	for (std::size_t i = 0; i < players_.size(); ++i) poses.push_back(ReadyPose(i));
-	return poses;
+const std::vector<Pose2>& Match::ReadyPoses() const {
+	// Asked every tick, changed only by a kick-off for the other team or the teams changing ends:
+	// computed again (the same way) when one of those differs from the last time.
+	const std::array<int, 3> key{referee_.KickingTeam(), referee_.Side(0), referee_.Side(1)};
+	if (key != ready_key_ || ready_poses_.size() != players_.size()) {
+		ready_poses_.clear();
+		for (std::size_t i = 0; i < players_.size(); ++i) ready_poses_.push_back(ReadyPose(i));
+		ready_key_ = key;
+	}
+	return ready_poses_;
 }
 
 std::vector<std::string> Match::ActiveStates(std::size_t robot) const {
@@ -196,7 +201,7 @@ void Match::Think(std::size_t index) {
 	p.estimate = {static_cast<float>(estimate.x), static_cast<float>(estimate.y), static_cast<float>(estimate.theta)};
 	p.confidence = static_cast<float>(player.sense.Confidence());
 	p.ball = player.sense.BallPercept(body, Time());
-	const Pose2 ready = TeamFrame(team, ReadyPose(index));
+	const Pose2 ready = TeamFrame(team, ReadyPoses()[index]);
 	p.ready_position = {static_cast<float>(ready.x), static_cast<float>(ready.y), static_cast<float>(ready.theta)};
 
 	const auto started = std::chrono::steady_clock::now();

@@ -86,7 +86,7 @@ void JsonLinesLog::OnFrame(const Match& match) {
 		for (std::size_t s = 0; s < active.size(); ++s) line << (s ? "," : "") << JsonString(active[s]);
 		line << "],\"taken\":[";
 		const auto& taken = match.TransitionsSinceFrame(i);
-		for (std::size_t s = 0; s < taken.size(); ++s) line << (s ? "," : "") << JsonString(taken[s]);
+		for (std::size_t s = 0; s < taken.size(); ++s) line << (s ? "," : "") << JsonString(*taken[s]);
 		line << "]}";
 	}
 	line << "]}";

@@ -17,8 +17,9 @@ bool Occluded(const World& world, int viewer, Vec2 from, Vec2 to, int target) {
 		const int index = static_cast<int>(i);
 		if (index == viewer || index == target || !world.bodies[i].on_field) continue;
 		const Vec2 centre = world.bodies[i].pose.Position();
-		if ((centre - from).Norm() >= distance) continue;
-		if ((ClosestOnSegment(from, to, centre) - centre).Norm() < kOcclusionRadius) return true;
+		if (SurelyLonger(centre - from, distance) || (centre - from).Norm() >= distance) continue;
+		const Vec2 miss = ClosestOnSegment(from, to, centre) - centre;
+		if (!SurelyLonger(miss, kOcclusionRadius) && miss.Norm() < kOcclusionRadius) return true;
 	}
 	return false;
 }
@@ -30,22 +31,48 @@ Vec2 Noisy(Vec2 relative, Random& random, double base_sigma, double relative_sig
 	return FromPolar(measured, bearing);
 }
 
+/**
+ * A robot's camera for one image: Pose2::ToLocal and InView with the rotation into the robot's
+ * frame computed once per image instead of once per thing looked at (the same cos and sin of the
+ * same angle, so the same numbers).
+ */
+class Eye {
+public:
+	Eye(const Body& body, bool top_camera)
+	    : body_(body), top_camera_(top_camera), cos_(std::cos(-body.pose.theta)), sin_(std::sin(-body.pose.theta)) {}
+
+	/** body.pose.ToLocal(outer), as Vec2::Rotated computes it. */
+	Vec2 ToLocal(Vec2 outer) const {
+		const Vec2 v = outer - body_.pose.Position();
+		return {cos_ * v.x - sin_ * v.y, sin_ * v.x + cos_ * v.y};
+	}
+
+	bool InView(Vec2 point, double low, double high) const {
+		const Vec2 relative = ToLocal(point);
+		const double bearing = NormalizeAngle(relative.Angle() - body_.head_yaw);
+		if (std::fabs(bearing) > nao::kHorizontalFov / 2) return false;
+		const double height = top_camera_ ? nao::kTopCameraHeight : nao::kBottomCameraHeight;
+		const double optical_axis = body_.head_pitch + (top_camera_ ? nao::kTopCameraPitch : nao::kBottomCameraPitch);
+		// depth along the optical axis' horizontal direction
+		const double depth = std::max(1e-6, relative.Norm() * std::cos(bearing));
+		// angles below the horizon of the object's bottom and top (the top only when the bottom is in view)
+		const double half = nao::kVerticalFov / 2;
+		const double below_bottom = std::atan2(height - low, depth);
+		if (!(below_bottom >= optical_axis - half)) return false;
+		const double below_top = std::atan2(height - high, depth);
+		return below_top <= optical_axis + half;
+	}
+
+private:
+	const Body& body_;
+	bool top_camera_;
+	double cos_;
+	double sin_;
+};
+
 }  // namespace
 
-bool InView(const Body& body, bool top_camera, Vec2 point, double low, double high) {
-	const Vec2 relative = body.pose.ToLocal(point);
-	const double bearing = NormalizeAngle(relative.Angle() - body.head_yaw);
-	if (std::fabs(bearing) > nao::kHorizontalFov / 2) return false;
-	const double height = top_camera ? nao::kTopCameraHeight : nao::kBottomCameraHeight;
-	const double optical_axis = body.head_pitch + (top_camera ? nao::kTopCameraPitch : nao::kBottomCameraPitch);
-	// depth along the optical axis' horizontal direction
-	const double depth = std::max(1e-6, relative.Norm() * std::cos(bearing));
-	// angles below the horizon of the object's top and bottom
-	const double below_top = std::atan2(height - high, depth);
-	const double below_bottom = std::atan2(height - low, depth);
-	const double half = nao::kVerticalFov / 2;
-	return below_bottom >= optical_axis - half && below_top <= optical_axis + half;
-}
+bool InView(const Body& body, bool top_camera, Vec2 point, double low, double high) { return Eye(body, top_camera).InView(point, low, high); }
 
 Image Look(const World& world, int index, bool top_camera, Random& random) {
 	Image image;
@@ -53,22 +80,27 @@ Image Look(const World& world, int index, bool top_camera, Random& random) {
 	const Body& body = world.bodies[static_cast<std::size_t>(index)];
 	if (!body.Upright()) return image;
 	const Vec2 eye = body.pose.Position();
+	const Eye camera(body, top_camera);
 
+	// Each test in the order (and with the numbers) it always had; a range surely exceeded
+	// skips the hypot of the distance, whose comparison would have failed.
 	const Vec2 ball = world.ball.position;
-	const double ball_distance = (ball - eye).Norm();
 	const double ball_range = top_camera ? kBallRange : kBallRangeBottom;
-	if (ball_distance <= ball_range &&
-	    InView(body, top_camera, ball, 0, 2 * field::kBallRadius) &&
-	    !Occluded(world, index, eye, ball, -1) &&
-	    random.Chance(kBallDetection - 0.15 * ball_distance / kBallRange)) {
-		image.seen.push_back({Sighting::Kind::Ball, Noisy(body.pose.ToLocal(ball), random, 0.01, 0.04), -1});
+	if (!SurelyLonger(ball - eye, ball_range)) {
+		const double ball_distance = (ball - eye).Norm();
+		if (ball_distance <= ball_range &&
+		    camera.InView(ball, 0, 2 * field::kBallRadius) &&
+		    !Occluded(world, index, eye, ball, -1) &&
+		    random.Chance(kBallDetection - 0.15 * ball_distance / kBallRange)) {
+			image.seen.push_back({Sighting::Kind::Ball, Noisy(camera.ToLocal(ball), random, 0.01, 0.04), -1});
+		}
 	}
 	for (int side : {1, -1}) {
 		for (int post : {1, -1}) {
 			const Vec2 where{side * field::kPostX, post * field::kPostY};
-			if ((where - eye).Norm() <= kPostRange && InView(body, top_camera, where, 0, field::kPostHeight) &&
-			    random.Chance(0.9)) {
-				image.seen.push_back({Sighting::Kind::Post, Noisy(body.pose.ToLocal(where), random, 0.05, 0.05), -1});
+			if (!SurelyLonger(where - eye, kPostRange) && (where - eye).Norm() <= kPostRange &&
+			    camera.InView(where, 0, field::kPostHeight) && random.Chance(0.9)) {
+				image.seen.push_back({Sighting::Kind::Post, Noisy(camera.ToLocal(where), random, 0.05, 0.05), -1});
 			}
 		}
 	}
@@ -77,9 +109,9 @@ Image Look(const World& world, int index, bool top_camera, Random& random) {
 		const int other_index = static_cast<int>(i);
 		if (other_index == index || !other.on_field) continue;
 		const Vec2 where = other.pose.Position();
-		if ((where - eye).Norm() <= kRobotRange && InView(body, top_camera, where, 0, nao::kHeight) &&
-		    !Occluded(world, index, eye, where, other_index) && random.Chance(0.8)) {
-			image.seen.push_back({Sighting::Kind::Robot, Noisy(body.pose.ToLocal(where), random, 0.05, 0.08), other_index});
+		if (!SurelyLonger(where - eye, kRobotRange) && (where - eye).Norm() <= kRobotRange &&
+		    camera.InView(where, 0, nao::kHeight) && !Occluded(world, index, eye, where, other_index) && random.Chance(0.8)) {
+			image.seen.push_back({Sighting::Kind::Robot, Noisy(camera.ToLocal(where), random, 0.05, 0.08), other_index});
 		}
 	}
 	return image;

@@ -301,8 +301,9 @@ namespace {
 /** Pushes the ball out of a round obstacle and reflects it; true when they met. */
 bool Bounce(Ball& ball, Vec2 closest, double radius, double restitution, Vec2 obstacle_velocity) {
 	const Vec2 away = ball.position - closest;
-	const double distance = away.Norm();
 	const double contact = radius + field::kBallRadius;
+	if (SurelyLonger(away, contact)) return false;  // apart: the hypot below would say so too
+	const double distance = away.Norm();
 	if (distance >= contact) return false;
 	const Vec2 normal = distance > 1e-9 ? away * (1.0 / distance) : Vec2{1, 0};
 	ball.position = closest + normal * contact;
@@ -336,8 +337,9 @@ void World::CollideBodies(double dt) {
 			Body& b = bodies[j];
 			if (!a.on_field || !b.on_field) continue;
 			const Vec2 between = b.pose.Position() - a.pose.Position();
-			const double distance = between.Norm();
 			const double contact = 2 * nao::kBodyRadius;
+			if (SurelyLonger(between, contact)) continue;  // apart: the hypot below would say so too
+			const double distance = between.Norm();
 			if (distance >= contact) continue;
 			const Vec2 normal = distance > 1e-9 ? between * (1.0 / distance) : Vec2{1, 0};
 			const Vec2 half = normal * (0.5 * (contact - distance));
@@ -368,8 +370,9 @@ void World::CollideBodies(double dt) {
 		for (const Vec2 post : {Vec2{field::kPostX, field::kPostY}, Vec2{field::kPostX, -field::kPostY},
 		                        Vec2{-field::kPostX, field::kPostY}, Vec2{-field::kPostX, -field::kPostY}}) {
 			const Vec2 away = bodies[i].pose.Position() - post;
-			const double distance = away.Norm();
 			const double contact = nao::kBodyRadius + field::kPostRadius;
+			if (SurelyLonger(away, contact)) continue;
+			const double distance = away.Norm();
 			if (distance < contact && distance > 1e-9) {
 				const Vec2 moved = post + away * (contact / distance);
 				bodies[i].pose.x = moved.x;

@@ -1,15 +1,19 @@
 #ifndef KSE_MESSAGING_BLACKBOARD_H
 #define KSE_MESSAGING_BLACKBOARD_H
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <deque>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <string>
+#include <type_traits>
+#include <typeinfo>
 #include <vector>
 
 #include <google/protobuf/message.h>
@@ -17,6 +21,7 @@
 #include "kse/messaging/Clock.h"
 #include "kse/messaging/Kind.h"
 #include "kse/messaging/MessageHub.h"
+#include "kse/messaging/SpinLock.h"
 
 namespace kse::messaging {
 
@@ -66,19 +71,25 @@ class Blackboard {
   /// The last State message of that topic and type, or nullptr.
   template <class T>
   std::shared_ptr<const T> ReadState(const std::string& topic) {
-    return std::dynamic_pointer_cast<const T>(ReadStateMessage(topic, TypeName<T>()));
+    std::shared_ptr<const T> out;
+    ReadStateTo(topic, TypeName<T>(), &Take<T>, &out);
+    return out;
   }
 
   /// The oldest unread Signal of that topic and type, consumed by this read; nullptr when none.
   template <class T>
   std::shared_ptr<const T> ReadSignal(const std::string& topic) {
-    return std::dynamic_pointer_cast<const T>(ReadSignalMessage(topic, TypeName<T>()));
+    std::shared_ptr<const T> out;
+    ReadSignalTo(topic, TypeName<T>(), &Take<T>, &out);
+    return out;
   }
 
   /// The newest Data entry of that topic and type, or nullptr.
   template <class T>
   std::shared_ptr<const T> ReadData(const std::string& topic) {
-    return std::dynamic_pointer_cast<const T>(ReadDataMessage(topic, TypeName<T>()));
+    std::shared_ptr<const T> out;
+    ReadDataTo(topic, TypeName<T>(), &Take<T>, &out);
+    return out;
   }
 
   /// Every Data entry of that topic and type stamped at or after `since`, oldest first.
@@ -97,7 +108,13 @@ class Blackboard {
   /// the hub to the inboxes of the other blackboards subscribed to the topic.
   template <class T>
   void Publish(const std::string& topic, Kind kind, const T& message) {
-    PublishCopy(topic, kind, message);
+    if constexpr (std::is_final_v<T> && !std::is_abstract_v<T>) {
+      // A generated message class (final): the copy and its count in one allocation, copied
+      // by the class's own code rather than through reflection.
+      PublishMessage(topic, kind, std::make_shared<T>(message));
+    } else {
+      PublishCopy(topic, kind, message);
+    }
   }
 
   /// Asks the owning engine to re-evaluate at that time (each call is one wake-up: a timer
@@ -127,13 +144,30 @@ class Blackboard {
 
   template <class T>
   static const std::string& TypeName() {
-    return T::descriptor()->full_name();
+    // Asked on every read: looked up once per class (through a once-flag on each call otherwise).
+    return MessageHub::TypeNameOf<T>();
   }
 
  private:
   friend class MessageHub;
-  void Deliver(const std::string& topic, Kind kind, const MessagePtr& message, TimePoint time);
-  static std::string Key(const std::string& topic, const std::string& type_name);
+  // A typed read hands the message it found, under the lock, to a function of its type: one
+  // reference taken, no dynamic_cast when the message is of that very class.
+  using Sink = void (*)(const MessagePtr& found, void* out);
+  template <class T>
+  static void Take(const MessagePtr& found, void* out) {
+    auto& typed = *static_cast<std::shared_ptr<const T>*>(out);
+    if (typeid(*found) == typeid(T)) {
+      typed = std::shared_ptr<const T>(found, static_cast<const T*>(found.get()));
+    } else {
+      typed = std::dynamic_pointer_cast<const T>(found);
+    }
+  }
+  void ReadStateTo(const std::string& topic, const std::string& type_name, Sink sink, void* out) const;
+  void ReadSignalTo(const std::string& topic, const std::string& type_name, Sink sink, void* out);
+  void ReadDataTo(const std::string& topic, const std::string& type_name, Sink sink, void* out) const;
+
+  void Deliver(const std::string& topic, const std::string& type_name, Kind kind,
+               const MessagePtr& message, TimePoint time);
 
   struct Entry {
     MessagePtr message;
@@ -142,17 +176,24 @@ class Blackboard {
   // What the blackboard holds: topics, messages, the inbox, wake-ups. Most blackboards of a
   // process (a statechart's root, its regions) never hold a message, so it is made by the
   // first subscription, publish or wake-up, not with the blackboard.
+  struct Slot;
   struct Contents;
   // Callers hold mutex_.
   Contents& Made();
-  void Apply(std::string key, Kind kind, const MessagePtr& message, TimePoint time);
-  void Queue(std::string key, Kind kind, const MessagePtr& message, TimePoint time);
+  Slot* Find(const std::string& topic, const std::string& type_name) const;
+  Slot& SlotFor(const std::string& topic, const std::string& type_name);
+  void Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time);
+  void Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time);
 
   MessageHub& hub_;
   const std::string name_;
 
-  mutable std::mutex mutex_;
+  mutable SpinLock mutex_;
   std::unique_ptr<Contents> contents_;  // null until needed
+  // The earliest wake-up (ticks of the clock's epoch; the largest value when none), written
+  // under mutex_: the engine asks TakeDueWakeups() every cycle, nearly always too early.
+  std::atomic<Duration::rep> next_wakeup_{kNoWakeup};
+  static constexpr Duration::rep kNoWakeup = std::numeric_limits<Duration::rep>::max();
 };
 
 }  // namespace kse::messaging

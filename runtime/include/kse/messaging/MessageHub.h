@@ -1,20 +1,21 @@
 #ifndef KSE_MESSAGING_MESSAGE_HUB_H
 #define KSE_MESSAGING_MESSAGE_HUB_H
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include <google/protobuf/message.h>
 
 #include "kse/messaging/Clock.h"
 #include "kse/messaging/Kind.h"
-
-namespace google::protobuf {
-class Message;
-}
+#include "kse/messaging/SpinLock.h"
 
 namespace kse::messaging {
 
@@ -44,6 +45,26 @@ class MessageHub {
                std::shared_ptr<const google::protobuf::Message> message,
                const Blackboard* origin = nullptr);
 
+  /// The same for a message of a generated class (they are final), whose type name is then
+  /// looked up once per class instead of through the message's descriptor on every publish.
+  template <class T, std::enable_if_t<std::is_final_v<T> &&
+                                          std::is_base_of_v<google::protobuf::Message, T>,
+                                      int> = 0>
+  void Publish(const std::string& topic, Kind kind, std::shared_ptr<const T> message,
+               const Blackboard* origin = nullptr) {
+    if (!message) {
+      return;
+    }
+    Publish(topic, TypeNameOf<T>(), kind, std::move(message), origin);
+  }
+
+  /// The protobuf full name of a generated message class, looked up once.
+  template <class T>
+  static const std::string& TypeNameOf() {
+    static const std::string& name = T::descriptor()->full_name();
+    return name;
+  }
+
   /// Registers a function called (on the publishing thread) after every publish. Listeners must
   /// be quick and must not add or remove listeners. Returns an id for RemoveListener.
   ListenerId AddListener(Listener listener);
@@ -59,24 +80,30 @@ class MessageHub {
 
  private:
   friend class Blackboard;
-  struct Retained {
-    std::shared_ptr<const google::protobuf::Message> message;
-    TimePoint time;
-    const Blackboard* origin;  // never handed back to the blackboard that published it
-  };
+  // Everything the hub keeps for one topic: its subscribers and its last State messages.
+  struct Topic;
+
+  /// Publish with the message's type name already known (a blackboard has looked it up).
+  void Publish(const std::string& topic, const std::string& type_name, Kind kind,
+               std::shared_ptr<const google::protobuf::Message> message, const Blackboard* origin);
+  // Callers hold mutex_.
+  Topic* FindTopic(const std::string& topic) const;
+  Topic& TopicFor(const std::string& topic);
 
   void Attach(Blackboard* board, const std::string& topic);
   void Detach(Blackboard* board);
 
   const Clock& clock_;
 
-  mutable std::mutex mutex_;  // subscribers_, retained_, published_
-  std::map<std::string, std::vector<Blackboard*>> subscribers_;
-  std::map<std::string, std::map<std::string, Retained>> retained_;  // topic -> type -> state
+  mutable SpinLock mutex_;  // topics_, published_
+  std::vector<std::unique_ptr<Topic>> topics_;
   std::size_t published_ = 0;
 
   std::mutex listeners_mutex_;
   std::vector<std::pair<ListenerId, Listener>> listeners_;
+  // Whether there are listeners, read without the lock: a publish with none (the engine does
+  // not listen) does not take listeners_mutex_.
+  std::atomic<bool> has_listeners_{false};
   ListenerId next_listener_ = 1;
 };
 

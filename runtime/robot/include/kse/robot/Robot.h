@@ -71,6 +71,9 @@ public:
 	 * (standard error when empty).
 	 */
 	Robot(const std::string& behaviour, const messaging::Clock& clock, statechart_engine::Reporter reporter = {});
+	~Robot();
+	Robot(const Robot&) = delete;
+	Robot& operator=(const Robot&) = delete;
 
 	/** Publishes the perception, runs the statechart to a stable state and collects the motion commands. */
 	MotionCommands Step(const Perception& perception);
@@ -79,9 +82,13 @@ public:
 	const std::string& Behaviour() const { return behaviour_; }
 
 private:
+	// The messages a robot publishes every cycle, used again once nobody else holds them.
+	struct Recycling;
+
 	std::string behaviour_;
 	messaging::MessageHub hub_;
 	messaging::Blackboard motion_;
+	std::unique_ptr<Recycling> recycling_;
 	std::unique_ptr<statechart_engine::IStatechart> statechart_;
 };
 

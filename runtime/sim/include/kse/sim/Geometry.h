@@ -56,6 +56,16 @@ struct Pose2 {
 	}
 };
 
+/**
+ * Whether a vector is certainly longer (shorter) than a length, told from its squared length,
+ * without the hypot of Norm(): the margin of a billionth is far wider than the rounding of
+ * either, so where these say yes, Norm() compared with the length says the same. Where they say
+ * no, it is too close to call and the caller compares Norm() as before; nothing computed
+ * changes, only work whose result would have been thrown away is skipped.
+ */
+inline bool SurelyLonger(Vec2 v, double length) { return v.x * v.x + v.y * v.y > length * length * (1 + 1e-9); }
+inline bool SurelyShorter(Vec2 v, double length) { return v.x * v.x + v.y * v.y < length * length * (1 - 1e-9); }
+
 /** Closest point of the segment a-b to p. */
 inline Vec2 ClosestOnSegment(Vec2 a, Vec2 b, Vec2 p) {
 	const Vec2 ab = b - a;

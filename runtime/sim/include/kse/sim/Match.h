@@ -114,8 +114,8 @@ public:
 	const std::string& Behaviour(std::size_t robot) const { return players_[robot]->config.behaviour; }
 	const TeamConfig& Team(int team) const { return team == 0 ? config_.home : config_.away; }
 	std::vector<std::string> ActiveStates(std::size_t robot) const;
-	/** Transitions the robot's statechart took since the last frame. */
-	const std::vector<std::string>& TransitionsSinceFrame(std::size_t robot) const { return players_[robot]->taken; }
+	/** Transitions the robot's statechart took since the last frame (their names, which live as long as the match). */
+	const std::vector<const std::string*>& TransitionsSinceFrame(std::size_t robot) const { return players_[robot]->taken; }
 	const robot::Perception& LastPerception(std::size_t robot) const { return players_[robot]->perception; }
 	const RobotSense& Sense(std::size_t robot) const { return players_[robot]->sense; }
 	/** Kick-off pose of a robot, field frame, for the current kick-off. */
@@ -141,7 +141,7 @@ private:
 		std::unique_ptr<robot::Robot> robot;
 		RobotSense sense;
 		robot::Perception perception;
-		std::vector<std::string> taken;
+		std::vector<const std::string*> taken;  // names of the transitions, not copies: a robot takes about one a cycle
 		double last_transition = 0;
 		double pinned = 0;
 		Vec2 last_position;
@@ -154,7 +154,7 @@ private:
 	void Emit(MatchEvent event);
 	void Apply(const std::vector<RefereeEvent>& events);
 	void WatchForStuck(std::size_t robot);
-	std::vector<Pose2> ReadyPoses() const;
+	const std::vector<Pose2>& ReadyPoses() const;
 	void ExchangeWithGameController();
 
 	MatchConfig config_;
@@ -173,6 +173,8 @@ private:
 	bool ended_ = false;
 	std::size_t stuck_ = 0;
 	double engine_seconds_ = 0;
+	mutable std::vector<Pose2> ready_poses_;  // ReadyPoses(), for ready_key_
+	mutable std::array<int, 3> ready_key_{};  // kicking team, sides of the teams
 };
 
 /** The default kick-off pose of a player number, team frame; the kick-off taker stands at the centre. */
