@@ -9,7 +9,7 @@ out="$here/target/bench"
 mkdir -p "$out"
 # shellcheck source=runtime-prefix.sh
 . "$here/bench/runtime-prefix.sh"
-"$here/examples/generate.sh"
+# the examples' build generates their statecharts from the models with this repository's ./kse
 cmake -S "$here/examples" -B "$out/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
   -DCMAKE_PREFIX_PATH="$out/prefix" > "$out/examples.configure.log"
 cmake --build "$out/examples" -j 2 --target match_bench > "$out/examples.build.log"

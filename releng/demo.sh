@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# `kse demo`: the whole pipeline on a fresh machine. Validates the example models, generates
-# their Monas C++, builds the runtime and the examples with CMake, and plays a short 3-against-3
-# match on the simulated field; prints the result and where the log and the picture are.
+# `kse demo`: the whole pipeline on a fresh machine. Validates the example models, builds the
+# runtime and the examples with CMake (which generates their Monas C++ from the models), and plays
+# a 3-against-3 match on the simulated field; prints the result and where the log and the picture are.
 # Options: --seed N (default 1), --half SECONDS (default 600, a full SPL half: about a second on the simulator), --out DIR (default target/demo).
 # KSE_RUNTIME_PREFIX=DIR reuses an installed runtime instead of building one.
 set -euo pipefail
@@ -23,19 +23,12 @@ step() { echo "== $*" >&2; }
 
 "$here/releng/debian-packages.sh"
 
-step "1/5 validating the example models"
-for model in Goalie Attacker Defender; do
-  "$here/kse" validate "$here/examples/$model/$model.stct"
-done
-
-step "2/5 generating their Monas C++ into examples/src (activities are kept)"
-for model in Goalie Attacker Defender; do
-  "$here/kse" generate --quiet "$here/examples/$model/$model.stct" "$here/examples/src"
-done
+step "1/4 validating the example models"
+"$here/kse" validate "$here"/examples/{Goalie/Goalie,Attacker/Attacker,Defender/Defender}.stct
 
 prefix="${KSE_RUNTIME_PREFIX:-}"
 if [ -z "$prefix" ]; then
-  step "3/5 building and installing the C++ runtime (log: $out/runtime.log)"
+  step "2/4 building and installing the C++ runtime (log: $out/runtime.log)"
   prefix="$out/runtime-prefix"
   {
     cmake -S "$here/runtime" -B "$out/runtime" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
@@ -44,17 +37,17 @@ if [ -z "$prefix" ]; then
     cmake --install "$out/runtime"
   } > "$out/runtime.log" 2>&1 || { tail -n 30 "$out/runtime.log" >&2; exit 1; }
 else
-  step "3/5 using the runtime installed in $prefix"
+  step "2/4 using the runtime installed in $prefix"
 fi
 
-step "4/5 building the examples against it (log: $out/examples.log)"
+step "3/4 building the examples against it, their statecharts generated from the models (log: $out/examples.log)"
 {
   cmake -S "$here/examples" -B "$out/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
     -DCMAKE_PREFIX_PATH="$prefix"
   cmake --build "$out/examples" -j 2 --target kse-match
 } > "$out/examples.log" 2>&1 || { tail -n 30 "$out/examples.log" >&2; exit 1; }
 
-step "5/5 playing Goalie, Defender and Attacker against themselves: a ${half}-second half, seed $seed"
+step "4/4 playing Goalie, Defender and Attacker against themselves: a ${half}-second half, seed $seed"
 "$out/examples/kse-match" --seed "$seed" --half "$half" \
   --home Goalie:1,Defender:2,Attacker:3 --away Goalie:1,Defender:2,Attacker:3 \
   --log "$out/match.jsonl" --svg "$out/match.svg"
