@@ -90,10 +90,14 @@ public final class StatechartResources {
 	}
 
 	public static Model load(ResourceSet resourceSet, Path file) throws IOException {
+		return load(resourceSet, file, loadOptions());
+	}
+
+	private static Model load(ResourceSet resourceSet, Path file, Map<Object, Object> options) throws IOException {
 		checkReadable(file);
 		Resource resource = resourceSet.createResource(URI.createFileURI(file.toAbsolutePath().toString()));
 		try {
-			resource.load(loadOptions());
+			resource.load(options);
 		} catch (IOException | RuntimeException e) {
 			throw new IOException(loadFailure(file, e), e);
 		}
@@ -125,6 +129,9 @@ public final class StatechartResources {
 	 * so the saved file could never be opened again. The message names the element and the field.
 	 */
 	public static void checkWritable(Model model) throws IOException {
+		if (allWritable(model)) {
+			return;
+		}
 		for (var it = org.eclipse.emf.ecore.util.EcoreUtil.<EObject>getAllProperContents(java.util.List.of(model), false); it.hasNext();) {
 			EObject element = it.next();
 			for (EAttribute attribute : element.eClass().getEAllAttributes()) {
@@ -139,10 +146,48 @@ public final class StatechartResources {
 		}
 	}
 
+	/**
+	 * Whether every text of the model is one a file can hold, found without EMF's reflection (a
+	 * save of a large model would spend more time here than writing it); when not, the generic
+	 * walk above finds the first such text in the order it reports it.
+	 */
+	private static boolean allWritable(Model model) {
+		if (unwritable(model.getName()) >= 0) {
+			return false;
+		}
+		java.util.ArrayDeque<org.kse.model.statechart.Node> states = new java.util.ArrayDeque<>(model.getNodes());
+		while (!states.isEmpty()) {
+			org.kse.model.statechart.Node state = states.pop();
+			if (state.eClass() != StatechartPackage.Literals.NODE || unwritable(state.getName()) >= 0 || unwritable(state.getLabel()) >= 0
+					|| unwritable(state.getType()) >= 0 || unwritable(state.getActivity()) >= 0) {
+				return false;
+			}
+			states.addAll(state.getChildren());
+		}
+		for (org.kse.model.statechart.Transition transition : model.getTransitions()) {
+			if (transition.eClass() != StatechartPackage.Literals.TRANSITION || unwritable(transition.getTE()) >= 0 || unwritable(transition.getName()) >= 0) {
+				return false;
+			}
+		}
+		for (org.kse.model.statechart.Variable variable : model.getVariables()) {
+			if (variable.eClass() != StatechartPackage.Literals.VARIABLE || unwritable(variable.getName()) >= 0 || unwritable(variable.getType()) >= 0) {
+				return false;
+			}
+		}
+		return model.eClass() == StatechartPackage.Literals.MODEL;
+	}
+
 	/** The index of the first character XML 1.0 cannot hold, or -1. */
 	private static int unwritable(String text) {
-		for (int i = 0; i < text.length(); i++) {
+		if (text == null) {
+			return -1;
+		}
+		for (int i = 0, length = text.length(); i < length; i++) {
 			char c = text.charAt(i);
+			if (c >= 0x20 && c < 0xD800) {
+				// nearly every character: decided with two comparisons
+				continue;
+			}
 			boolean allowed = c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c <= 0xD7FF) || (c >= 0xE000 && c <= 0xFFFD);
 			if (Character.isHighSurrogate(c) && i + 1 < text.length() && Character.isLowSurrogate(text.charAt(i + 1))) {
 				i++;
@@ -181,11 +226,27 @@ public final class StatechartResources {
 		if (resource == null) {
 			throw new IOException("the model is not attached to a file");
 		}
-		checkWritable(model);
-		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-		resource.save(bytes, saveOptions());
 		Path target = Path.of(resource.getURI().toFileString());
-		writeAtomically(target, bytes.toByteArray());
+		// straight into the file beside the target: a large model is not held twice in memory
+		writeAtomically(target, output -> saveWritable(model, resource, output, saveOptions()));
+	}
+
+	/**
+	 * Saves a model whose text a file can hold, and refuses one with {@link #checkWritable}'s
+	 * message. The streaming writer checks every text as it writes it and leaves a model with such
+	 * text to EMF; so the separate walk over the model is only made when EMF wrote it or failed
+	 * (a walk that would cost a large model as much as writing it).
+	 */
+	private static void saveWritable(Model model, Resource resource, java.io.OutputStream output, Map<Object, Object> options) throws IOException {
+		try {
+			resource.save(output, options);
+		} catch (IOException | RuntimeException e) {
+			checkWritable(model);
+			throw e;
+		}
+		if (!streamed(resource)) {
+			checkWritable(model);
+		}
 	}
 
 	/** Saves a model to a file (detached from any previous resource). */
@@ -198,16 +259,19 @@ public final class StatechartResources {
 
 	/** Serializes a model as the bytes its file would hold, leaving the model where it was. */
 	public static byte[] toBytes(Model model) throws IOException {
-		checkWritable(model);
+		return toBytes(model, saveOptions());
+	}
+
+	private static byte[] toBytes(Model model, Map<Object, Object> options) throws IOException {
 		ByteArrayOutputStream bytes = new ByteArrayOutputStream();
 		if (model.eResource() != null) {
-			model.eResource().save(bytes, saveOptions());
+			saveWritable(model, model.eResource(), bytes, options);
 			return bytes.toByteArray();
 		}
 		Resource scratch = newResourceSet().createResource(URI.createFileURI("model.stct"));
 		scratch.getContents().add(model);
 		try {
-			scratch.save(bytes, saveOptions());
+			saveWritable(model, scratch, bytes, options);
 		} finally {
 			scratch.getContents().remove(model);
 		}
@@ -219,6 +283,16 @@ public final class StatechartResources {
 	 * permissions any new file gets (the umask applies); an existing file keeps its own.
 	 */
 	public static void writeAtomically(Path target, byte[] content) throws IOException {
+		writeAtomically(target, output -> output.write(content));
+	}
+
+	/** What writes a file's content; a failure leaves the file as it was. */
+	@FunctionalInterface
+	private interface Content {
+		void writeTo(java.io.OutputStream output) throws IOException;
+	}
+
+	private static void writeAtomically(Path target, Content content) throws IOException {
 		if (Files.isDirectory(target)) {
 			throw new IOException(target + ": is a folder; give the name of a file to write");
 		}
@@ -229,7 +303,9 @@ public final class StatechartResources {
 		Files.createDirectories(directory);
 		Path temporary = directory.resolve("." + target.getFileName() + "." + UUID.randomUUID() + ".tmp");
 		try {
-			Files.write(temporary, content, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+			try (java.io.OutputStream output = new java.io.BufferedOutputStream(Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), 1 << 16)) {
+				content.writeTo(output);
+			}
 			if (Files.exists(target) && Files.getFileStore(directory).supportsFileAttributeView(PosixFileAttributeView.class)) {
 				Files.setPosixFilePermissions(temporary, Files.getPosixFilePermissions(target));
 			}
@@ -241,6 +317,48 @@ public final class StatechartResources {
 		} finally {
 			Files.deleteIfExists(temporary);
 		}
+	}
+
+	/**
+	 * Load and save option: {@code Boolean.FALSE} leaves the file to EMF's XMI parser and
+	 * serializer alone, without the streaming reader and writer (ADR 0026). For comparing the two.
+	 */
+	public static final String OPTION_STREAMING = "org.kse.model.streaming";
+
+	private static final String DEPTH_PROPERTY = "jdk.xml.maxElementDepth";
+
+	/**
+	 * Loads a model with or without the streaming reader: {@code load(file, false)} is what
+	 * {@link #load(Path)} gives for every file the streaming reader does not take.
+	 */
+	public static Model load(Path file, boolean streaming) throws IOException {
+		Map<Object, Object> options = loadOptions();
+		if (!streaming) {
+			options.put(OPTION_STREAMING, Boolean.FALSE);
+		}
+		return load(newResourceSet(), file, options);
+	}
+
+	/** The bytes of a model as {@link #toBytes(Model)} gives them, with or without the streaming writer. */
+	public static byte[] toBytes(Model model, boolean streaming) throws IOException {
+		Map<Object, Object> options = saveOptions();
+		if (!streaming) {
+			options.put(OPTION_STREAMING, Boolean.FALSE);
+		}
+		return toBytes(model, options);
+	}
+
+	/**
+	 * Whether the last load or save of a resource of {@link #newResourceSet()} went through the
+	 * streaming reader or writer; for tests and benchmarks that must know which one ran.
+	 */
+	public static boolean streamed(Resource resource) {
+		return resource instanceof PositionedResource positioned && positioned.fallback == null;
+	}
+
+	/** Why the last load or save of a resource was left to EMF, or null when it was streamed: for tests' messages. */
+	public static String fallbackReason(Resource resource) {
+		return resource instanceof PositionedResource positioned ? positioned.fallback : "not a resource of StatechartResources";
 	}
 
 	private static Map<Object, Object> loadOptions() {
@@ -275,23 +393,70 @@ public final class StatechartResources {
 		/** While saving: each element's positional fragment, and each element's index in its container's list. */
 		private Map<EObject, String> fragments;
 		private Map<EObject, Integer> positions;
+		/** Why the last load or save was left to EMF, or null when the streaming reader or writer did it. */
+		private String fallback = "not loaded or saved yet";
 
 		PositionedResource(URI uri) {
 			super(uri);
 		}
 
+		/**
+		 * The file is read by {@link StctReader} when it is in the one dialect KSE writes, and by
+		 * EMF's parser otherwise (ADR 0026): the same bytes, so EMF's messages and rules apply to
+		 * every file the streaming reader does not take.
+		 */
 		@Override
 		public void doLoad(java.io.InputStream inputStream, Map<?, ?> options) throws IOException {
-			containers = new HashMap<>();
+			fallback = "load options or an input stream that only EMF's parser takes";
+			java.io.InputStream input = inputStream;
+			byte[] bytes = null;
 			try {
-				super.doLoad(inputStream, options);
+				if (streamingReadable(inputStream, options)) {
+					int[] length = new int[1];
+					bytes = SpareBuffers.readAll(inputStream, length);
+					try {
+						StctReader.Result result = StctReader.read(bytes, length[0], depthLimit(options));
+						setEncoding(result.encoding());
+						setXMLVersion("1.0");
+						getContents().add(result.model());
+						fallback = null;
+						return;
+					} catch (StctReader.NotOurs e) {
+						fallback = e.getMessage();
+						input = new java.io.ByteArrayInputStream(bytes, 0, length[0]);
+					}
+				}
+				containers = new HashMap<>();
+				try {
+					super.doLoad(input, options);
+				} finally {
+					containers = null;
+				}
 			} finally {
-				containers = null;
+				if (bytes != null) {
+					SpareBuffers.giveInput(bytes);
+				}
 			}
 		}
 
+		/**
+		 * Saved by {@link StctWriter} when the options are KSE's and the model is one it can write,
+		 * by EMF's serializer otherwise: the bytes are the same either way (ADR 0026).
+		 */
 		@Override
 		public void doSave(java.io.OutputStream outputStream, Map<?, ?> options) throws IOException {
+			fallback = "save options, contents or an output stream that only EMF's serializer takes";
+			if (streamingWritable(outputStream, options)) {
+				try {
+					// EMF's default when the options name no line delimiter: the JVM's, as it started
+					StctWriter.write((Model) getContents().get(0), System.lineSeparator(), outputStream);
+					outputStream.flush();
+					fallback = null;
+					return;
+				} catch (StctReader.NotOurs e) {
+					fallback = e.getMessage();
+				}
+			}
 			fragments = new IdentityHashMap<>();
 			positions = new IdentityHashMap<>();
 			try {
@@ -300,6 +465,61 @@ public final class StatechartResources {
 				fragments = null;
 				positions = null;
 			}
+		}
+
+		/**
+		 * An XMI resource walks every tree attached to it or detached from it to keep its ID maps,
+		 * even without any: a model saved under another name is walked twice, a model read once.
+		 * Without an ID map, modification tracking or intrinsic IDs, the walk does nothing, and is
+		 * left out; with any of them it is EMF's as before.
+		 */
+		@Override
+		protected boolean isAttachedDetachedHelperRequired() {
+			return eObjectToIDMap != null || idToEObjectMap != null || useUUIDs() || isTrackingModification() || getIntrinsicIDToEObjectMap() != null;
+		}
+
+		/** Options that change nothing for a file of KSE's dialect; any other is EMF's to apply. */
+		private static final java.util.Set<Object> PLAIN_LOAD_OPTIONS = java.util.Set.of(XMLResource.OPTION_DEFER_IDREF_RESOLUTION,
+				XMLResource.OPTION_PARSER_PROPERTIES, OPTION_STREAMING);
+
+		private boolean streamingReadable(java.io.InputStream inputStream, Map<?, ?> options) {
+			if (options != null && (Boolean.FALSE.equals(options.get(OPTION_STREAMING)) || !PLAIN_LOAD_OPTIONS.containsAll(options.keySet()))) {
+				return false;
+			}
+			if (options != null && options.get(XMLResource.OPTION_PARSER_PROPERTIES) instanceof Map<?, ?> properties
+					&& !properties.keySet().equals(java.util.Set.of(DEPTH_PROPERTY))) {
+				return false;
+			}
+			return !(inputStream instanceof org.eclipse.emf.ecore.resource.URIConverter.Loadable)
+					&& !(inputStream instanceof org.eclipse.emf.ecore.resource.URIConverter.Readable) && getContents().isEmpty();
+		}
+
+		/**
+		 * The parser's element depth limit for this load: the one the options set, or, without it,
+		 * the JDK's as configured (100 in JDK 25); the reader leaves a file that reaches it to the parser.
+		 */
+		private static int depthLimit(Map<?, ?> options) {
+			Object properties = options == null ? null : options.get(XMLResource.OPTION_PARSER_PROPERTIES);
+			if (properties instanceof Map<?, ?> map && map.get(DEPTH_PROPERTY) != null) {
+				try {
+					int limit = Integer.parseInt(String.valueOf(map.get(DEPTH_PROPERTY)).trim());
+					return limit <= 0 ? Integer.MAX_VALUE : limit;
+				} catch (NumberFormatException e) {
+					return 0;
+				}
+			}
+			return StctReader.ParserLimits.ELEMENT_DEPTH;
+		}
+
+		private boolean streamingWritable(java.io.OutputStream outputStream, Map<?, ?> options) {
+			if (options == null || Boolean.FALSE.equals(options.get(OPTION_STREAMING))) {
+				return false;
+			}
+			Map<Object, Object> rest = new HashMap<>(options);
+			rest.remove(OPTION_STREAMING);
+			return rest.equals(saveOptions()) && "1.0".equals(getXMLVersion()) && getContents().size() == 1 && getContents().get(0) instanceof Model
+					&& (eObjectToIDMap == null || eObjectToIDMap.isEmpty()) && (eObjectToExtensionMap == null || eObjectToExtensionMap.isEmpty())
+					&& !(outputStream instanceof org.eclipse.emf.ecore.resource.URIConverter.Saveable);
 		}
 
 		/**
@@ -336,7 +556,7 @@ public final class StatechartResources {
 		 */
 		@Override
 		public String getURIFragment(EObject eObject) {
-			if (fragments == null || !getEObjectToIDMap().isEmpty() || eObject.eIsProxy()) {
+			if (fragments == null || (eObjectToIDMap != null && !eObjectToIDMap.isEmpty()) || eObject.eIsProxy()) {
 				return super.getURIFragment(eObject);
 			}
 			String fragment = fragments.get(eObject);
