@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <utility>
 
 #include "SameString.h"
@@ -328,6 +329,33 @@ void Blackboard::ReadDataTo(const std::string& topic, const std::string& type_na
   std::lock_guard<SpinLock> lock(mutex_);
   Slot* slot = Find(topic, type_name);
   if (slot != nullptr && !slot->data.empty()) sink(slot->data.back().message, out);
+}
+
+Blackboard::Slot* Blackboard::SlotOf(const std::string& topic, const std::string& type_name) {
+  std::lock_guard<SpinLock> lock(mutex_);
+  return &SlotFor(topic, type_name);
+}
+
+void Blackboard::ReadStateAt(Slot* slot, Sink sink, void* out) const {
+  std::lock_guard<SpinLock> lock(mutex_);
+  if (slot->state.message) sink(slot->state.message, out);
+}
+
+void Blackboard::ReadSignalAt(Slot* slot, Sink sink, void* out) {
+  std::lock_guard<SpinLock> lock(mutex_);
+  if (slot->signals.empty()) return;
+  sink(slot->signals.front(), out);
+  slot->signals.pop_front();
+}
+
+void Blackboard::ReadDataAt(Slot* slot, Sink sink, void* out) const {
+  std::lock_guard<SpinLock> lock(mutex_);
+  if (!slot->data.empty()) sink(slot->data.back().message, out);
+}
+
+void ThrowUnbound(const std::string& type_name) {
+  throw std::logic_error("kse::messaging::Reader<" + type_name +
+                         "> read before Bind(blackboard, topic) (bind it in UserInit())");
 }
 
 namespace {

@@ -369,6 +369,50 @@ TEST_F(Messaging, AMessageOfAnotherClassWithTheSameNameIsNotReadAsThatClass) {
   EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 7) << "the same key, replaced";
 }
 
+TEST_F(Messaging, AReaderBoundBeforeAnyMessageReadsWhatTheBlackboardsReadsWould) {
+  // Generated guards bind a Reader in UserInit(), before anything is published: it must see the
+  // same snapshot as the string-keyed reads, kind by kind, and keep other keys apart.
+  Blackboard board(hub);
+  board.Subscribe("behavior");
+  kse::messaging::Reader<HeadToBMessage> state(board, "behavior");
+  kse::messaging::Reader<HeadToBMessage> signal(board, "worldstate");
+  kse::messaging::Reader<HeadToBMessage> data(board, "other");
+  kse::messaging::Reader<PositionMessage> other_type(board, "behavior");
+  EXPECT_EQ(state.ReadState(), nullptr);
+
+  hub.Publish("behavior", Kind::State, Head(1));
+  EXPECT_EQ(state.ReadState(), nullptr) << "a snapshot until ProcessMessages()";
+  board.ProcessMessages();
+  ASSERT_NE(state.ReadState(), nullptr);
+  EXPECT_EQ(state.ReadState(), board.ReadState<HeadToBMessage>("behavior"));
+  EXPECT_EQ(state.ReadState()->ballfound(), 1);
+  EXPECT_EQ(other_type.ReadState(), nullptr);
+  EXPECT_EQ(state.ReadSignal(), nullptr) << "a State message is not a signal";
+
+  board.Publish("worldstate", Kind::Signal, *Head(2));
+  board.Publish("worldstate", Kind::Signal, *Head(3));
+  EXPECT_EQ(signal.ReadSignal()->ballfound(), 2) << "the own signal, at once, consumed";
+  EXPECT_EQ(board.ReadSignal<HeadToBMessage>("worldstate")->ballfound(), 3);
+  EXPECT_EQ(signal.ReadSignal(), nullptr);
+
+  board.Publish("other", Kind::Data, *Head(4));
+  board.Publish("other", Kind::Data, *Head(5));
+  EXPECT_EQ(data.ReadData()->ballfound(), 5);
+  EXPECT_EQ(data.ReadData()->ballfound(), 5) << "reading Data does not consume";
+  EXPECT_EQ(board.ReadDataHistory<HeadToBMessage>("other", TimePoint{}).size(), 2u);
+}
+
+TEST_F(Messaging, AReaderReadBeforeItIsBoundSaysSo) {
+  kse::messaging::Reader<HeadToBMessage> reader;
+  EXPECT_FALSE(reader.IsBound());
+  try {
+    (void)reader.ReadState();
+    FAIL() << "an unbound reader read";
+  } catch (const std::logic_error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("Reader<HeadToBMessage> read before Bind"));
+  }
+}
+
 TEST_F(Messaging, WakeupsScheduledMeanwhileOnAnotherThreadAreTakenLater) {
   // TakeDueWakeups answers "none due yet" without the lock; what another thread schedules in
   // the meantime must be taken by a later call, never lost.

@@ -56,11 +56,18 @@ struct Robot::Recycling {
 	Recycled<WorldInfo> world{messaging::Blackboard::kDataHistoryLimit + 8};
 	Perception last;  // what the last State messages said
 	bool published_once = false;
+	// the motion commands, read every cycle: their keys looked up once
+	messaging::Reader<MotionWalkMessage> walk;
+	messaging::Reader<MotionHeadMessage> head;
+	messaging::Reader<MotionActionMessage> action;
 };
 
 Robot::Robot(const std::string& behaviour, const messaging::Clock& clock, statechart_engine::Reporter reporter)
 	: behaviour_(behaviour), hub_(clock), motion_(hub_, "motion"), recycling_(std::make_unique<Recycling>()) {
 	motion_.Subscribe("motion");
+	recycling_->walk.Bind(motion_, "motion");
+	recycling_->head.Bind(motion_, "motion");
+	recycling_->action.Bind(motion_, "motion");
 	statechart_engine::Options options;
 	options.inline_activities = true;
 	options.reporter = std::move(reporter);
@@ -141,7 +148,7 @@ MotionCommands Robot::Step(const Perception& perception) {
 	// This robot reads every motion command of each cycle: with nothing new there is nothing to read.
 	if (motion_.PendingMessages() == 0) return commands;
 	motion_.ProcessMessages();
-	while (auto walk = motion_.ReadSignal<MotionWalkMessage>("motion")) {
+	while (auto walk = recycling_->walk.ReadSignal()) {
 		if (walk->command() == "setWalkTargetVelocity" && walk->parameter_size() >= 3) {
 			commands.walk = true;
 			commands.walk_to = false;
@@ -156,14 +163,14 @@ MotionCommands Robot::Step(const Perception& perception) {
 			commands.to_theta = walk->parameter(2);
 		}
 	}
-	while (auto head_command = motion_.ReadSignal<MotionHeadMessage>("motion")) {
+	while (auto head_command = recycling_->head.ReadSignal()) {
 		if (head_command->command() == "setHead" && head_command->parameter_size() >= 2) {
 			commands.head = true;
 			commands.yaw = head_command->parameter(0);
 			commands.pitch = head_command->parameter(1);
 		}
 	}
-	while (auto action = motion_.ReadSignal<MotionActionMessage>("motion")) {
+	while (auto action = recycling_->action.ReadSignal()) {
 		commands.actions.push_back(action->command());
 	}
 	return commands;

@@ -66,29 +66,30 @@ inline void Subscribe(kse::messaging::Blackboard& blackboard) {
 
 /** Walk with velocities normalised to the walk's limits. */
 inline void Walk(kse::messaging::Blackboard& blackboard, float vx, float vy, float vtheta) {
-	MotionWalkMessage walk;
-	walk.set_command("setWalkTargetVelocity");
-	walk.add_parameter(Clamp(vx));
-	walk.add_parameter(Clamp(vy));
-	walk.add_parameter(Clamp(vtheta));
-	walk.add_parameter(1.0f);
-	blackboard.Publish("motion", kse::messaging::Kind::Signal, walk);
+	// made as the message to publish (PublishMessage), not copied into one: an activity commands the legs at every run
+	auto walk = std::make_shared<MotionWalkMessage>();
+	walk->set_command("setWalkTargetVelocity");
+	walk->add_parameter(Clamp(vx));
+	walk->add_parameter(Clamp(vy));
+	walk->add_parameter(Clamp(vtheta));
+	walk->add_parameter(1.0f);
+	blackboard.PublishMessage("motion", kse::messaging::Kind::Signal, std::move(walk));
 }
 
 inline void Stop(kse::messaging::Blackboard& blackboard) { Walk(blackboard, 0, 0, 0); }
 
 inline void Head(kse::messaging::Blackboard& blackboard, float yaw, float pitch) {
-	MotionHeadMessage head;
-	head.set_command("setHead");
-	head.add_parameter(yaw);
-	head.add_parameter(pitch);
-	blackboard.Publish("motion", kse::messaging::Kind::Signal, head);
+	auto head = std::make_shared<MotionHeadMessage>();
+	head->set_command("setHead");
+	head->add_parameter(yaw);
+	head->add_parameter(pitch);
+	blackboard.PublishMessage("motion", kse::messaging::Kind::Signal, std::move(head));
 }
 
 inline void Action(kse::messaging::Blackboard& blackboard, const std::string& command) {
-	MotionActionMessage action;
-	action.set_command(command);
-	blackboard.Publish("motion", kse::messaging::Kind::Signal, action);
+	auto action = std::make_shared<MotionActionMessage>();
+	action->set_command(command);
+	blackboard.PublishMessage("motion", kse::messaging::Kind::Signal, std::move(action));
 }
 
 /** Walk towards a field pose: turn to it, walk, then turn to the wanted heading. */

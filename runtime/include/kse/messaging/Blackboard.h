@@ -25,6 +25,9 @@
 
 namespace kse::messaging {
 
+template <class T>
+class Reader;
+
 /// One entry of a Data history.
 template <class T>
 struct Stamped {
@@ -150,6 +153,8 @@ class Blackboard {
 
  private:
   friend class MessageHub;
+  template <class T>
+  friend class Reader;
   // A typed read hands the message it found, under the lock, to a function of its type: one
   // reference taken, no dynamic_cast when the message is of that very class.
   using Sink = void (*)(const MessagePtr& found, void* out);
@@ -166,6 +171,14 @@ class Blackboard {
   void ReadSignalTo(const std::string& topic, const std::string& type_name, Sink sink, void* out);
   void ReadDataTo(const std::string& topic, const std::string& type_name, Sink sink, void* out) const;
 
+  struct Slot;
+  // What a Reader does: its key's slot, made now if no message has come yet (a slot, once
+  // made, lives as long as the blackboard), then reads there without looking the key up.
+  Slot* SlotOf(const std::string& topic, const std::string& type_name);
+  void ReadStateAt(Slot* slot, Sink sink, void* out) const;
+  void ReadSignalAt(Slot* slot, Sink sink, void* out);
+  void ReadDataAt(Slot* slot, Sink sink, void* out) const;
+
   void Deliver(const std::string& topic, const std::string& type_name, Kind kind,
                const MessagePtr& message, TimePoint time);
 
@@ -176,7 +189,6 @@ class Blackboard {
   // What the blackboard holds: topics, messages, the inbox, wake-ups. Most blackboards of a
   // process (a statechart's root, its regions) never hold a message, so it is made by the
   // first subscription, publish or wake-up, not with the blackboard.
-  struct Slot;
   struct Contents;
   // Callers hold mutex_.
   Contents& Made();
@@ -194,6 +206,56 @@ class Blackboard {
   // under mutex_: the engine asks TakeDueWakeups() every cycle, nearly always too early.
   std::atomic<Duration::rep> next_wakeup_{kNoWakeup};
   static constexpr Duration::rep kNoWakeup = std::numeric_limits<Duration::rep>::max();
+};
+
+/// What an unbound Reader throws (std::logic_error naming the type).
+[[noreturn]] void ThrowUnbound(const std::string& type_name);
+
+/// A typed read of one topic on one blackboard, its key looked up once, at Bind(): what a
+/// generated guard keeps for each message it reads (bound in UserInit()), so that Eval() goes
+/// straight to the message. It reads exactly what the blackboard's ReadState<T>(topic),
+/// ReadSignal<T>(topic) and ReadData<T>(topic) would: the same snapshot, under the same lock,
+/// a shared_ptr the caller may keep. Valid as long as the blackboard; not thread-safe itself
+/// (Bind it before others read through it).
+template <class T>
+class Reader {
+ public:
+  Reader() = default;
+  Reader(Blackboard& blackboard, const std::string& topic) { Bind(blackboard, topic); }
+
+  void Bind(Blackboard& blackboard, const std::string& topic) {
+    slot_ = blackboard.SlotOf(topic, Blackboard::TypeName<T>());
+    blackboard_ = &blackboard;
+  }
+  bool IsBound() const noexcept { return blackboard_ != nullptr; }
+
+  /// As Blackboard::ReadState<T>(topic).
+  std::shared_ptr<const T> ReadState() const {
+    std::shared_ptr<const T> out;
+    Bound().ReadStateAt(slot_, &Blackboard::Take<T>, &out);
+    return out;
+  }
+  /// As Blackboard::ReadSignal<T>(topic): consumes the signal.
+  std::shared_ptr<const T> ReadSignal() const {
+    std::shared_ptr<const T> out;
+    Bound().ReadSignalAt(slot_, &Blackboard::Take<T>, &out);
+    return out;
+  }
+  /// As Blackboard::ReadData<T>(topic).
+  std::shared_ptr<const T> ReadData() const {
+    std::shared_ptr<const T> out;
+    Bound().ReadDataAt(slot_, &Blackboard::Take<T>, &out);
+    return out;
+  }
+
+ private:
+  Blackboard& Bound() const {
+    if (blackboard_ == nullptr) ThrowUnbound(Blackboard::TypeName<T>());
+    return *blackboard_;
+  }
+
+  Blackboard* blackboard_ = nullptr;
+  Blackboard::Slot* slot_ = nullptr;
 };
 
 }  // namespace kse::messaging

@@ -30,7 +30,10 @@ import org.kse.expression.transitionExpression.StringLiteral
  */
 class ConditionCode {
 
-	/** One blackboard read: {@code auto name = _blk->Read<kind><type>(topic);} */
+	/**
+	 * One blackboard read: a member {@code kse::messaging::Reader<type> name_} bound to the topic in
+	 * {@code UserInit()}, read as {@code auto name = name_.Read<kind>();} in {@code Eval()}.
+	 */
 	static class MessageRead {
 		public val String variable
 		public val String topic

@@ -155,11 +155,14 @@ class MonasTemplates {
 					«FOR topic : code.topics»
 						_blk->Subscribe(«CppNames.string(topic)»);
 					«ENDFOR»
+					«FOR read : code.reads»
+						«read.variable»_.Bind(*_blk, «CppNames.string(read.topic)»);
+					«ENDFOR»
 				}
 
 				bool Eval() override {
 					«FOR read : code.reads»
-						const auto «read.variable» = _blk->Read«read.kind»<«read.type»>(«CppNames.string(read.topic)»);
+						const auto «read.variable» = «read.variable»_.Read«read.kind»();
 					«ENDFOR»
 					«IF code.checksTimeouts»
 						// a TimeoutCheck guard refreshes the blackboard, as the original did; it decides on what was read above
@@ -171,6 +174,14 @@ class MonasTemplates {
 					«ENDIF»
 					return result;
 				}
+			«IF !code.reads.empty»
+
+			private:
+				// each message's blackboard key, looked up once (ADR 0027): Eval() runs at nearly every step
+				«FOR read : code.reads»
+					kse::messaging::Reader<«read.type»> «read.variable»_;
+				«ENDFOR»
+			«ENDIF»
 			};
 
 			}  // namespace «transition.namespace»

@@ -13,13 +13,18 @@ class TrCond_0_2_TO_0_3 : public statechart_engine::ICondition {
 public:
 	void UserInit() override {
 		_blk->Subscribe("behavior");
+		msg0_.Bind(*_blk, "behavior");
 	}
 
 	bool Eval() override {
-		const auto msg0 = _blk->ReadState<HeadToBMessage>("behavior");
+		const auto msg0 = msg0_.ReadState();
 		const bool result = ((msg0 == nullptr) || (msg0 != nullptr && msg0->ballfound() == 0));
 		return result;
 	}
+
+private:
+	// each message's blackboard key, looked up once (ADR 0027): Eval() runs at nearly every step
+	kse::messaging::Reader<HeadToBMessage> msg0_;
 };
 
 }  // namespace kse_statechart_AllKinds

@@ -14,14 +14,21 @@ public:
 	void UserInit() override {
 		_blk->Subscribe("behavior");
 		_blk->Subscribe("worldstate");
+		msg0_.Bind(*_blk, "behavior");
+		msg1_.Bind(*_blk, "worldstate");
 	}
 
 	bool Eval() override {
-		const auto msg0 = _blk->ReadState<HeadToBMessage>("behavior");
-		const auto msg1 = _blk->ReadData<WorldInfo>("worldstate");
+		const auto msg0 = msg0_.ReadState();
+		const auto msg1 = msg1_.ReadData();
 		const bool result = ((msg0 != nullptr && msg0->ballfound() > 0) && (msg1 != nullptr && !ballAway((*msg1))));
 		return result;
 	}
+
+private:
+	// each message's blackboard key, looked up once (ADR 0027): Eval() runs at nearly every step
+	kse::messaging::Reader<HeadToBMessage> msg0_;
+	kse::messaging::Reader<WorldInfo> msg1_;
 };
 
 }  // namespace kse_statechart_AllKinds

@@ -15,16 +15,23 @@ public:
 	void UserInit() override {
 		_blk->Subscribe("behavior");
 		_blk->Subscribe("worldstate");
+		timeout0_.Bind(*_blk, "behavior");
+		msg0_.Bind(*_blk, "worldstate");
 	}
 
 	bool Eval() override {
-		const auto timeout0 = _blk->ReadState<TimeoutMsg>("behavior");
-		const auto msg0 = _blk->ReadState<GameStateMessage>("worldstate");
+		const auto timeout0 = timeout0_.ReadState();
+		const auto msg0 = msg0_.ReadState();
 		// a TimeoutCheck guard refreshes the blackboard, as the original did; it decides on what was read above
 		_blk->ProcessMessages();
 		const bool result = (statechart_engine::TimeoutCheck(*_blk, timeout0) && (msg0 != nullptr && msg0->player_state() == PLAYER_PLAYING));
 		return result;
 	}
+
+private:
+	// each message's blackboard key, looked up once (ADR 0027): Eval() runs at nearly every step
+	kse::messaging::Reader<TimeoutMsg> timeout0_;
+	kse::messaging::Reader<GameStateMessage> msg0_;
 };
 
 }  // namespace kse_statechart_AllKinds

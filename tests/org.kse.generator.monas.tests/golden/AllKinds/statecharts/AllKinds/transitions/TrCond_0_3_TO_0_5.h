@@ -13,13 +13,18 @@ class TrCond_0_3_TO_0_5 : public statechart_engine::ICondition {
 public:
 	void UserInit() override {
 		_blk->Subscribe("worldstate");
+		msg0_.Bind(*_blk, "worldstate");
 	}
 
 	bool Eval() override {
-		const auto msg0 = _blk->ReadState<GameStateMessage>("worldstate");
+		const auto msg0 = msg0_.ReadState();
 		const bool result = (msg0 != nullptr && msg0->player_state() != PLAYER_PLAYING);
 		return result;
 	}
+
+private:
+	// each message's blackboard key, looked up once (ADR 0027): Eval() runs at nearly every step
+	kse::messaging::Reader<GameStateMessage> msg0_;
 };
 
 }  // namespace kse_statechart_AllKinds

@@ -13,13 +13,18 @@ class TrCond_0_4_2_2_TO_0_4_2_3 : public statechart_engine::ICondition {
 public:
 	void UserInit() override {
 		_blk->Subscribe("worldstate");
+		msg0_.Bind(*_blk, "worldstate");
 	}
 
 	bool Eval() override {
-		const auto msg0 = _blk->ReadData<WorldInfo>("worldstate");
+		const auto msg0 = msg0_.ReadData();
 		const bool result = (msg0 != nullptr && msg0->myposition().confidence() > 0.5);
 		return result;
 	}
+
+private:
+	// each message's blackboard key, looked up once (ADR 0027): Eval() runs at nearly every step
+	kse::messaging::Reader<WorldInfo> msg0_;
 };
 
 }  // namespace kse_statechart_AllKinds

@@ -94,7 +94,9 @@ class GeneratorTest {
 		String nullTest = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h"));
 		assertTrue(nullTest.contains("(msg0 == nullptr) || (msg0 != nullptr && msg0->ballfound() == 0)"), nullTest);
 		String signal = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_4_TO_0_5.h"));
-		assertTrue(signal.contains("_blk->ReadSignal<FallMessage>(\"worldstate\")"), signal);
+		assertTrue(signal.contains("kse::messaging::Reader<FallMessage> msg0_;")
+				&& signal.contains("msg0_.Bind(*_blk, \"worldstate\");")
+				&& signal.contains("const auto msg0 = msg0_.ReadSignal();"), "a signal read through a reader bound once: " + signal);
 		String activity = Files.readString(folder.resolve("activities/Search/Search.cpp"));
 		assertTrue(activity.contains("[[maybe_unused]] const auto ball = _blk->ReadState<HeadToBMessage>(\"behavior\");"), activity);
 		assertTrue(activity.contains("[[maybe_unused]] const auto world = _blk->ReadData<WorldInfo>(\"worldstate\");"), activity);
@@ -106,12 +108,15 @@ class GeneratorTest {
 		MonasGenerator.generate(allKinds(), folder, Options.DEFAULT);
 		Path transitions = folder.resolve("statecharts/AllKinds/transitions");
 		String guard = Files.readString(transitions.resolve("TrCond_0_3_TO_0_3.h"));
-		int timeoutRead = guard.indexOf("const auto timeout0 = _blk->ReadState<TimeoutMsg>(\"behavior\");");
-		int messageRead = guard.indexOf("const auto msg0 = _blk->ReadState<GameStateMessage>(\"worldstate\");");
+		int timeoutRead = guard.indexOf("const auto timeout0 = timeout0_.ReadState();");
+		int messageRead = guard.indexOf("const auto msg0 = msg0_.ReadState();");
 		int processing = guard.indexOf("_blk->ProcessMessages();");
 		int decision = guard.indexOf("const bool result = (statechart_engine::TimeoutCheck(*_blk, timeout0) && (msg0 != nullptr && ");
 		assertTrue(timeoutRead > 0 && messageRead > 0 && processing > timeoutRead && processing > messageRead && decision > processing, guard);
 		assertTrue(guard.contains("_blk->Subscribe(\"behavior\");") && guard.contains("_blk->Subscribe(\"worldstate\");"), "subscribes to the timer's topic too: " + guard);
+		int bindings = guard.indexOf("timeout0_.Bind(*_blk, \"behavior\");\n\t\tmsg0_.Bind(*_blk, \"worldstate\");");
+		assertTrue(bindings > guard.indexOf("void UserInit()") && bindings < guard.indexOf("bool Eval()"), "each reader is bound once, in UserInit(): " + guard);
+		assertTrue(guard.contains("kse::messaging::Reader<TimeoutMsg> timeout0_;") && guard.contains("kse::messaging::Reader<GameStateMessage> msg0_;"), guard);
 		assertTrue(guard.contains("#include <statechart_engine/TimeoutAction.h>"), guard);
 		assertFalse(guard.contains("TimeoutExpired"), guard);
 		for (String other : List.of("TrCond_0_2_TO_0_3.h", "TrCond_0_2_TO_0_4.h", "TrCond_0_3_TO_0_5.h", "TrCond_0_4_TO_0_5.h", "TrCond_0_4_2_2_TO_0_4_2_3.h")) {
@@ -386,7 +391,7 @@ class GeneratorTest {
 		MonasGenerator.generate(model, folder, Options.DEFAULT);
 		String condition = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrCond_0_2_TO_0_3.h"));
 		assertTrue(condition.contains("#include \"Team.pb.h\""), condition);
-		assertTrue(condition.contains("_blk->ReadState<TeamMessage>(\"behavior\")"), condition);
+		assertTrue(condition.contains("kse::messaging::Reader<TeamMessage> msg0_;") && condition.contains("msg0_.Bind(*_blk, \"behavior\");"), condition);
 		String cmake = Files.readString(folder.resolve("statecharts/AllKinds/CMakeLists.txt"));
 		assertTrue(cmake.contains("kse_add_messages(kse_user_messages"), cmake);
 		assertTrue(cmake.contains("${CMAKE_CURRENT_SOURCE_DIR}/../../messages/Team.proto"), cmake);

@@ -55,7 +55,7 @@ class MonasTreeTest {
 		String approach = Files.readString(transitions.resolve("TrCond_0_2_TO_0_3.h"));
 		assertTrue(approach.contains("#include \"Localization.pb.h\""), approach);
 		assertFalse(approach.contains("Gamecontroller.pb.h"), "the replaced built-in is the runtime's in C++: " + approach);
-		assertTrue(approach.contains("const auto msg0 = _blk->ReadState<LocalizeDone>(\"behavior\");"), approach);
+		assertTrue(approach.contains("const auto msg0 = msg0_.ReadState();") && approach.contains("kse::messaging::Reader<LocalizeDone> msg0_;"), approach);
 		assertTrue(approach.contains("(msg0 != nullptr && msg0->moveon() == 1) && (msg1 != nullptr && msg1->player_state() == PLAYER_PLAYING)"), approach);
 		String loop = Files.readString(transitions.resolve("TrCond_0_2_TO_0_2.h"));
 		assertTrue(loop.contains("(statechart_engine::TimeoutCheck(*_blk, timeout0) && (msg0 != nullptr && !msg0->moveon()))"), loop);
