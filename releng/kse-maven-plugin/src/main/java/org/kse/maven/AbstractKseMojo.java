@@ -73,6 +73,22 @@ abstract class AbstractKseMojo extends AbstractMojo {
 	/** The goal's name in the messages and the stamp: "generate" or "validate". */
 	abstract String goal();
 
+	/**
+	 * The models this goal runs on, or an empty list (and a line saying why) when the goal is
+	 * skipped or no model matches.
+	 */
+	List<Path> modelsToRun() throws MojoExecutionException {
+		if (skip) {
+			getLog().info("KSE: skipped (kse.skip)");
+			return List.of();
+		}
+		List<Path> modelFiles = selectModels();
+		if (modelFiles.isEmpty()) {
+			getLog().info("KSE: no models in " + basedir + " match " + (models == null || models.isEmpty() ? DEFAULT_MODELS : models) + ", nothing to " + goal());
+		}
+		return modelFiles;
+	}
+
 	List<Path> selectModels() throws MojoExecutionException {
 		List<String> patterns = models == null || models.isEmpty() ? List.of(DEFAULT_MODELS) : models;
 		return ModelSelection.select(basedir.toPath(), patterns, excludes == null ? List.of() : excludes);
@@ -115,6 +131,25 @@ abstract class AbstractKseMojo extends AbstractMojo {
 			stamp.file("model", model);
 		}
 		return stamp;
+	}
+
+	/**
+	 * The .proto inputs both goals read: the source folder's messages/ (only it: the folder
+	 * appearing without one is no change) and each --messages folder.
+	 */
+	static void stampMessages(Stamp stamp, Path sourceFolder, List<Path> messageFolders) throws IOException {
+		stamp.protos(sourceFolder.resolve("messages"));
+		for (Path messagesFolder : messageFolders) {
+			stamp.protos(messagesFolder);
+		}
+	}
+
+	/** The command's --messages options. */
+	static void addMessages(List<String> args, List<Path> messageFolders) {
+		for (Path messagesFolder : messageFolders) {
+			args.add("--messages");
+			args.add(messagesFolder.toString());
+		}
 	}
 
 	static String models(int count) {

@@ -45,16 +45,11 @@ public class GenerateMojo extends AbstractKseMojo {
 
 	@Override
 	public void execute() throws MojoExecutionException, MojoFailureException {
-		if (skip) {
-			getLog().info("KSE: skipped (kse.skip)");
-			return;
-		}
-		List<Path> modelFiles = selectModels();
-		Path folder = absolute(sourceFolder);
+		List<Path> modelFiles = modelsToRun();
 		if (modelFiles.isEmpty()) {
-			getLog().info("KSE: no models in " + basedir + " match " + (models == null || models.isEmpty() ? DEFAULT_MODELS : models) + ", nothing to generate");
 			return;
 		}
+		Path folder = absolute(sourceFolder);
 		List<Path> messageFolders = messagesFolders();
 		Path stampFile = stampFile();
 		Stamp stamp;
@@ -62,11 +57,7 @@ public class GenerateMojo extends AbstractKseMojo {
 			stamp = stamp(modelFiles);
 			stamp.input("option", "logger=" + logger);
 			stamp.input("option", "sourceFolder=" + folder);
-			// the command reads the source folder's messages/ as well as the --messages folders
-			stamp.protos(folder.resolve("messages"));
-			for (Path messagesFolder : messageFolders) {
-				stamp.protos(messagesFolder);
-			}
+			stampMessages(stamp, folder, messageFolders);
 			if (stamp.matches(stampFile, true)) {
 				getLog().info("KSE: " + models(modelFiles.size()) + " up to date, nothing to generate");
 				return;
@@ -80,10 +71,7 @@ public class GenerateMojo extends AbstractKseMojo {
 		if (logger) {
 			args.add("--logger");
 		}
-		for (Path messagesFolder : messageFolders) {
-			args.add("--messages");
-			args.add(messagesFolder.toString());
-		}
+		addMessages(args, messageFolders);
 		modelFiles.forEach(model -> args.add(model.toString()));
 		args.add(folder.toString());
 		getLog().info("KSE: generating " + models(modelFiles.size()) + " into " + folder);

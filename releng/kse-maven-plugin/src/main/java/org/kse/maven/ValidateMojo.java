@@ -36,13 +36,8 @@ public class ValidateMojo extends AbstractKseMojo {
 
 	@Override
 	public void execute() throws MojoExecutionException, MojoFailureException {
-		if (skip) {
-			getLog().info("KSE: skipped (kse.skip)");
-			return;
-		}
-		List<Path> modelFiles = selectModels();
+		List<Path> modelFiles = modelsToRun();
 		if (modelFiles.isEmpty()) {
-			getLog().info("KSE: no models in " + basedir + " match " + (models == null || models.isEmpty() ? DEFAULT_MODELS : models) + ", nothing to validate");
 			return;
 		}
 		Path folder = sourceFolder();
@@ -51,12 +46,7 @@ public class ValidateMojo extends AbstractKseMojo {
 		Stamp stamp;
 		try {
 			stamp = stamp(modelFiles);
-			// only the folder's messages/ matters: src appearing (the first kse:generate makes
-			// it) without a messages/ must not count as a change
-			stamp.protos(folder.resolve("messages"));
-			for (Path messagesFolder : messageFolders) {
-				stamp.protos(messagesFolder);
-			}
+			stampMessages(stamp, folder, messageFolders);
 			if (stamp.matches(stampFile, false)) {
 				getLog().info("KSE: " + models(modelFiles.size()) + " up to date, nothing to validate");
 				return;
@@ -72,10 +62,7 @@ public class ValidateMojo extends AbstractKseMojo {
 			args.add("--source");
 			args.add(folder.toString());
 		}
-		for (Path messagesFolder : messageFolders) {
-			args.add("--messages");
-			args.add(messagesFolder.toString());
-		}
+		addMessages(args, messageFolders);
 		modelFiles.forEach(model -> args.add(model.toString()));
 		List<String> errors = new ArrayList<>();
 		int exitCode = run(errors, args.toArray(String[]::new));
