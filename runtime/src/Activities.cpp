@@ -33,6 +33,13 @@ void EngineCore::Launch(BasicState* state) {
   if (!pool_) {
     RunActivity(state);
     UnwindIfGivenUp();
+    if (options_.inline_activities_last_until_next_run && current_loop_core != this) {
+      // The run is over, but the region behaves as if it went on until the next call, as a
+      // worker's run would: the region waits, the rest of the chart steps on.
+      // Not among running_activities_: nothing runs, nothing is to be waited for.
+      state->region_->running_.fetch_add(1, std::memory_order_acq_rel);
+      inline_runs_.push_back(state);
+    }
     return;
   }
   {
@@ -120,21 +127,71 @@ bool EngineCore::TakeWake() {
   return woken;
 }
 
+void EngineCore::BeginRun() {
+  {
+    std::lock_guard<EngineLock> lock(engine_lock_);
+    if (!unsettled_loop_.empty()) unsettled_loop_.clear();
+    if (inline_runs_.empty()) return;
+    for (BasicState* state : inline_runs_) {
+      state->region_->running_.fetch_sub(1, std::memory_order_acq_rel);
+    }
+    inline_runs_.clear();
+  }
+  std::lock_guard<std::mutex> lock(wake_mutex_);
+  woken_ = true;  // as FinishActivity: an activity's end makes the engine look again
+  ++wake_generation_;
+}
+
 bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) {
+  // The last kLoopRecord segments before the bound are recorded, to name the loop.
+  constexpr std::size_t kLoopRecord = 128;
+  const std::size_t record_from = max_transitions > kLoopRecord ? max_transitions - kLoopRecord : 0;
   std::lock_guard<EngineLock> lock(engine_lock_);
-  while (StepRoot()) {
+  for (;;) {
+    const std::size_t taken = transitions_taken_.load(std::memory_order_relaxed) - first;
+    if (taken >= record_from && fired_record_ == nullptr) {
+      loop_record_.clear();
+      fired_record_ = &loop_record_;
+    }
+    if (!StepRoot()) break;
     if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
-      Report(EngineReport::Kind::Warning, "RunUntilStable stopped after " +
-                                              std::to_string(max_transitions) +
-                                              " transitions: the statechart does not settle");
+      fired_record_ = nullptr;
+      unsettled_loop_ = DescribeLoop(loop_record_);
+      Report(EngineReport::Kind::Warning,
+             "RunUntilStable stopped after " + std::to_string(max_transitions) +
+                 " transitions: the statechart does not settle" +
+                 (unsettled_loop_.empty() ? std::string()
+                                          : "; it goes round " + unsettled_loop_ +
+                                                " without waiting for an activity or a timer"));
       return false;
     }
   }
+  fired_record_ = nullptr;
   return true;
+}
+
+std::string EngineCore::DescribeLoop(const std::vector<const TransitionSegmentBase*>& fired) {
+  // A loop that repeats within the record shows twice in a row at its end.
+  const std::size_t n = fired.size();
+  for (std::size_t period = 1; period <= n / 2; ++period) {
+    if (!std::equal(fired.end() - period, fired.end(), fired.end() - 2 * period)) continue;
+    std::string text;
+    for (std::size_t i = n - period; i < n; ++i) {
+      text += DescribeLabelled(fired[i]->Source()).substr(6) + " -> ";  // without "state "
+    }
+    return text + DescribeLabelled(fired[n - 1]->Target()).substr(6);
+  }
+  return "";
+}
+
+std::string EngineCore::UnsettledLoop() const {
+  std::lock_guard<EngineLock> lock(engine_lock_);
+  return unsettled_loop_;
 }
 
 bool EngineCore::RunIfWoken() {
   Activate();
+  BeginRun();
   if (!TakeWake()) {
     return false;
   }
@@ -144,6 +201,7 @@ bool EngineCore::RunIfWoken() {
 
 bool EngineCore::RunUntilStable(std::size_t max_transitions) {
   Activate();
+  BeginRun();
   const std::size_t first = transitions_taken_.load(std::memory_order_relaxed);
   for (;;) {
     if (TakeWake()) {
@@ -191,6 +249,7 @@ std::optional<kse::messaging::TimePoint> EngineCore::NextWakeup() const {
 
 void EngineCore::Start() {
   Activate();
+  BeginRun();  // the engine thread does not wait for inline runs: they end now
   std::lock_guard<std::mutex> control(control_mutex_);
   if (thread_.joinable()) {
     return;

@@ -66,6 +66,7 @@ class EngineCore {
   static void KeepAbandoned(std::unique_ptr<EngineCore> core);
 
   std::vector<std::string> ActiveStates() const;
+  std::string UnsettledLoop() const;
   std::vector<State*> States() const;
   std::vector<TransitionSegmentBase*> Transitions() const;
   void SetObserver(Statechart::Observer observer);
@@ -139,6 +140,13 @@ class EngineCore {
   }
   void UnwindIfThisThreadWasGivenUp() const;
 
+  /// At the start of RunUntilStable() and RunIfWoken(): the inline activities whose run lasts
+  /// until the next run (Options::inline_activities_last_until_next_run) end, their regions
+  /// free and the engine woken; the last unsettled loop is forgotten.
+  void BeginRun();
+  /// The loop at the end of the segments fired last, as its states ("" when none repeats).
+  static std::string DescribeLoop(const std::vector<const TransitionSegmentBase*>& fired);
+
   bool UsesPool() const noexcept { return !options_.inline_activities && options_.worker_threads > 0; }
 
   // Watchdog
@@ -168,6 +176,12 @@ class EngineCore {
   std::vector<State*> entry_paths_;  // every transition's entry path, one after the other
   Statechart::Observer observer_;
   std::atomic<bool> activated_{false};
+  std::vector<BasicState*> inline_runs_;  // inline activities that end at the next run
+  // Near a RunUntilStable() bound: every segment fired (into loop_record_). Null otherwise
+  // (one test per Fire()).
+  std::vector<const TransitionSegmentBase*>* fired_record_ = nullptr;
+  std::vector<const TransitionSegmentBase*> loop_record_;
+  std::string unsettled_loop_;  // under engine_lock_
 
   std::unique_ptr<WorkerPool> pool_;
 

@@ -275,6 +275,7 @@ bool Statechart::RunUntilStable(std::size_t max_transitions) {
 }
 
 std::vector<std::string> Statechart::ActiveStates() const { return core_->ActiveStates(); }
+std::string Statechart::UnsettledLoop() const { return core_->UnsettledLoop(); }
 std::size_t Statechart::ActivityFailures() const noexcept { return core_->activity_failures_.load(); }
 std::size_t Statechart::GuardFailures() const noexcept { return core_->guard_failures_.load(); }
 std::size_t Statechart::ActionFailures() const noexcept { return core_->action_failures_.load(); }

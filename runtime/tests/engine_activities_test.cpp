@@ -361,3 +361,144 @@ TEST_F(PooledActivities, AStateEnteredAgainWhileItsActivityRunsRunsItAgainAfterw
 
 }  // namespace
 }  // namespace kse_test
+
+namespace kse_test {
+namespace {
+
+// Options::inline_activities_last_until_next_run, as the simulated robot runs its chart: one
+// RunUntilStable() per decision cycle, an activity's run lasting until the next one.
+Options OneRunPerCall() {
+  Options options = Inline();
+  options.inline_activities_last_until_next_run = true;
+  return options;
+}
+
+TEST(InlineRunsLastACall, AnUnguardedLoopThroughAnActivityGoesOnceRoundPerCall) {
+  // runner = Wake.Chase~ : the loop back into Chase has no guard.
+  ManualClock clock;
+  MessageHub hub{clock};
+  Log log;
+  Statechart chart("Runner", hub, OneRunPerCall());
+  auto* start = chart.Add<StartState>("Runner_1", &chart);
+  auto wakes = Counter();
+  auto chases = Counter();
+  auto* wake = chart.Add<BasicState>("Wake", &chart, std::make_unique<CountingActivity>(wakes, &log, "Wake"));
+  auto* chase = chart.Add<BasicState>("Chase", &chart, std::make_unique<CountingActivity>(chases, &log, "Chase"));
+  chart.AddTransition(start, wake);
+  chart.AddTransition(wake, chase);
+  chart.AddTransition(chase, chase);
+  ::testing::internal::CaptureStderr();
+  EXPECT_TRUE(chart.RunUntilStable(1000));  // enters Wake, which runs
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Runner", "Wake"));
+  EXPECT_TRUE(chart.RunUntilStable(1000));  // Wake's run ends: into Chase, which runs
+  for (int cycle = 0; cycle < 5; ++cycle) EXPECT_TRUE(chart.RunUntilStable(1000));
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(wakes->load(), 1);
+  EXPECT_EQ(chases->load(), 6);  // one run per call after Wake's
+  EXPECT_EQ(chart.TransitionsTaken(), 7U);
+  EXPECT_EQ(chart.RunningActivities(), 0U);  // nothing to wait for: the runs are over
+  EXPECT_EQ(chart.UnsettledLoop(), "");
+}
+
+TEST(InlineRunsLastACall, TheTransitionsAreThoseOfAWorkerPool) {
+  // x+ then a choice: the same segments in the same order whether a worker runs the activity
+  // or the run lasts until the next call; only when differs.
+  auto build = [](Statechart& chart, std::shared_ptr<std::atomic<int>> runs) {
+    auto* start = chart.Add<StartState>("Root_1", &chart);
+    auto* x = chart.Add<BasicState>("X", &chart, std::make_unique<CountingActivity>(runs));
+    auto* y = chart.Add<BasicState>("Y", &chart, std::make_unique<CountingActivity>(runs));
+    auto* end = chart.Add<EndState>("Root_4", &chart);
+    chart.AddTransition(start, x);
+    chart.AddTransition(x, x, If([runs](Blackboard&) { return runs->load() < 3; }));
+    chart.AddTransition(x, y);
+    chart.AddTransition(y, end);
+  };
+  auto trace = [](Statechart& chart) {
+    auto taken = std::make_shared<std::vector<std::string>>();
+    chart.SetObserver([taken](const TransitionSegmentBase& segment) {
+      taken->push_back(segment.Source()->Name() + "->" + segment.Target()->Name());
+    });
+    return taken;
+  };
+  ManualClock clock;
+  MessageHub hub{clock};
+  Statechart pooled("Root", hub, Pooled());
+  build(pooled, Counter());
+  auto pooled_trace = trace(pooled);
+  pooled.RunUntilStable();
+  Statechart cycled("Root", hub, OneRunPerCall());
+  build(cycled, Counter());
+  auto cycled_trace = trace(cycled);
+  std::size_t calls = 0;
+  do {
+    cycled.RunUntilStable();
+    ++calls;
+  } while (!HasState(cycled.ActiveStates(), "Root_4") && calls < 100);
+  EXPECT_THAT(*pooled_trace, ElementsAre("Root_1->X", "X->X", "X->X", "X->Y", "Y->Root_4"));
+  EXPECT_EQ(*cycled_trace, *pooled_trace);
+  EXPECT_EQ(calls, 5U);  // four runs of an activity, each over at the next call
+}
+
+TEST(InlineRunsLastACall, ARunningRegionWaitsWhileTheOtherRegionSteps) {
+  ManualClock clock;
+  MessageHub hub{clock};
+  Statechart chart("Root", hub, OneRunPerCall());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* both = chart.Add<AndState>("Both", &chart);
+  auto* left = chart.Add<OrState>("Left", both);
+  auto* right = chart.Add<OrState>("Right", both);
+  auto* left_start = chart.Add<StartState>("Left_1", left);
+  auto* right_start = chart.Add<StartState>("Right_1", right);
+  auto runs = Counter();
+  auto* busy = chart.Add<BasicState>("Busy", left, std::make_unique<CountingActivity>(runs));
+  auto* after = chart.Add<BasicState>("After", left);
+  auto* a = chart.Add<BasicState>("A", right);
+  auto* b = chart.Add<BasicState>("B", right);
+  chart.AddTransition(start, both);
+  chart.AddTransition(left_start, busy);
+  chart.AddTransition(busy, after);
+  chart.AddTransition(right_start, a);
+  chart.AddTransition(a, b);
+  chart.RunUntilStable();
+  EXPECT_TRUE(HasState(chart.ActiveStates(), "Busy"));  // its run lasts until the next call
+  EXPECT_TRUE(HasState(chart.ActiveStates(), "B"));     // the other region went on
+  chart.RunUntilStable();
+  EXPECT_TRUE(HasState(chart.ActiveStates(), "After"));
+}
+
+TEST(InlineRunsLastACall, ALoopWithoutAnActivityIsStoppedAndNamedByItsStates) {
+  ManualClock clock;
+  MessageHub hub{clock};
+  std::vector<EngineReport> reports;
+  Options options = OneRunPerCall();
+  options.reporter = [&reports](const EngineReport& report) { reports.push_back(report); };
+  Statechart chart("Spinner", hub, options);
+  auto* start = chart.Add<StartState>("Spinner_1", &chart);
+  auto* look = chart.Add<BasicState>("Look", &chart);
+  auto* decide = chart.Add<ConditionConnector>("Spinner_3", &chart);
+  look->SetLabel("0.2");
+  decide->SetLabel("0.3");
+  chart.AddTransition(start, look);
+  chart.AddTransition(look, decide);
+  chart.AddTransition(decide, look);
+  EXPECT_FALSE(chart.RunUntilStable(1000));
+  EXPECT_EQ(chart.UnsettledLoop(), "0.2 'Look' -> 0.3 'Spinner_3' -> 0.2 'Look'");
+  ASSERT_EQ(reports.size(), 1U);
+  EXPECT_EQ(reports[0].kind, EngineReport::Kind::Warning);
+  EXPECT_THAT(reports[0].text, HasSubstr("stopped after 1000 transitions"));
+  EXPECT_THAT(reports[0].text, HasSubstr("0.2 'Look' -> 0.3 'Spinner_3' -> 0.2 'Look'"));
+}
+
+TEST(InlineRunsLastACall, AChartThatSettlesHasNoUnsettledLoop) {
+  ManualClock clock;
+  MessageHub hub{clock};
+  Statechart chart("Root", hub, OneRunPerCall());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* x = chart.Add<BasicState>("X", &chart);
+  chart.AddTransition(start, x);
+  EXPECT_TRUE(chart.RunUntilStable(1000));
+  EXPECT_EQ(chart.UnsettledLoop(), "");
+}
+
+}  // namespace
+}  // namespace kse_test

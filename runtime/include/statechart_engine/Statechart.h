@@ -55,6 +55,14 @@ struct Options {
   /// simulator does, so that a match is deterministic). An inline activity never leaves its
   /// region running.
   bool inline_activities = false;
+  /// With inline activities: an activity's run lasts until the next RunUntilStable() or
+  /// RunIfWoken() call, as a run on a worker takes time. Execute() runs when its state is
+  /// entered; its region stays running (nothing in it steps) until that next call, which ends
+  /// the run and re-evaluates. A driver that calls once per decision cycle (the simulated robot)
+  /// so gives every activity at least one cycle: a loop through an activity's state takes one
+  /// round per cycle instead of spinning inside one call, and the transitions are those a
+  /// worker pool gives. Not for a statechart run by Start(): its engine thread ignores it.
+  bool inline_activities_last_until_next_run = false;
   /// Size of the activity worker pool, as Monas' (0 behaves like inline_activities = true).
   std::size_t worker_threads = 10;
   /// The watchdog reports (once, as EngineReport::Kind::Overrun) every call into user code of
@@ -156,8 +164,13 @@ class Statechart : public OrState {
   /// engine is not woken. Wake-up times still ahead are not waited for. Gives up after
   /// 1,000,000 transitions (a statechart that loops forever), with a warning.
   void RunUntilStable();
-  /// As above with an explicit bound on the transitions taken; false when it was reached.
+  /// As above with an explicit bound on the transitions taken; false when it was reached. The
+  /// warning then names the loop the last transitions went round (see UnsettledLoop()).
   bool RunUntilStable(std::size_t max_transitions);
+  /// The loop the last RunUntilStable() that reached its bound went round, as its states'
+  /// labels and names from where it was to where it came back ("0.2 'Chase' -> 0.2.3 'C' ->
+  /// 0.2 'Chase'"); empty when none did. Thread-safe.
+  std::string UnsettledLoop() const;
 
   /// Names of every active state, in document order (the root first). Thread-safe.
   std::vector<std::string> ActiveStates() const;

@@ -70,6 +70,7 @@ Robot::Robot(const std::string& behaviour, const messaging::Clock& clock, statec
 	recycling_->action.Bind(motion_, "motion");
 	statechart_engine::Options options;
 	options.inline_activities = true;
+	options.inline_activities_last_until_next_run = true;
 	options.reporter = std::move(reporter);
 	statechart_ = statechart_engine::StatechartFactory::Instance().Create(behaviour, hub_, options);
 	if (!statechart_) {
@@ -93,6 +94,11 @@ bool SamePose(const Pose& a, const Pose& b) { return a.x == b.x && a.y == b.y &&
 }  // namespace
 
 MotionCommands Robot::Step(const Perception& perception) {
+	if (Failed()) {
+		MotionCommands stand;
+		stand.walk = true;  // at zero speed
+		return stand;
+	}
 	// A State message stands until the next one: one equal to the last would change nothing a
 	// reader sees, so it is published only when it differs (most cycles, none does).
 	const Perception* last = recycling_->published_once ? &recycling_->last : nullptr;
@@ -142,7 +148,13 @@ MotionCommands Robot::Step(const Perception& perception) {
 	recycling_->last = perception;
 	recycling_->published_once = true;
 
-	statechart_->Chart().RunUntilStable();
+	auto& chart = statechart_->Chart();
+	if (!chart.RunUntilStable(kTransitionsPerCycle)) {
+		const std::string loop = chart.UnsettledLoop();
+		failure_ = "the statechart took " + std::to_string(kTransitionsPerCycle) + " transitions in one decision cycle" +
+		           (loop.empty() ? std::string() : ", round " + loop) + ", without waiting for an activity or a timer";
+		return Step(perception);  // stands
+	}
 
 	MotionCommands commands;
 	// This robot reads every motion command of each cycle: with nothing new there is nothing to read.

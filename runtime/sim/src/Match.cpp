@@ -209,6 +209,11 @@ void Match::Think(std::size_t index) {
 	const robot::MotionCommands commands = player.robot ? player.robot->Step(p) : player.config.controller(p);
 	thinking_robot.store(nullptr, std::memory_order_relaxed);
 	engine_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+	if (player.robot && player.robot->Failed() && !player.failed) {
+		player.failed = true;
+		++failed_;
+		Emit({0, "failed", team, static_cast<int>(index), player.robot->Failure()});
+	}
 	if (!body.on_field) return;
 	const Motion before = body.motion;
 	body.Command(commands);
@@ -221,7 +226,8 @@ void Match::WatchForStuck(std::size_t index) {
 	const Vec2 position = body.pose.Position();
 	const double moved = (position - player.last_position).Norm();
 	player.last_position = position;
-	const bool watched = player.robot && referee_.State() == GameState::Playing && body.on_field;
+	// a failed robot has said why already
+	const bool watched = player.robot && !player.failed && referee_.State() == GameState::Playing && body.on_field;
 	if (!watched) {
 		player.last_transition = Time();
 		player.pinned = 0;

@@ -232,12 +232,16 @@ int RunMatchCli(int argc, char** argv) {
 		          << " s (seed " << config.seed << ", " << ToString(match.GetReferee().State()) << ")\n";
 		for (const auto& event : match.Events()) {
 			if (event.type == "goal") std::cout << "  goal at " << Fixed(event.time, 1) << " s by " << (event.robot >= 0 ? match.RobotId(static_cast<std::size_t>(event.robot)) : "?") << "\n";
+			if (event.type == "failed" && event.robot >= 0) {
+				const auto robot = static_cast<std::size_t>(event.robot);
+				std::cout << "  " << match.RobotId(robot) << " " << match.Behaviour(robot) << " failed at " << Fixed(event.time, 1) << " s and stood still: " << event.detail << "\n";
+			}
 		}
-		std::cout << "  stuck robots: " << match.StuckCount() << ", behaviour failures: " << match.Failures()
+		std::cout << "  stuck robots: " << match.StuckCount() << ", failed robots: " << match.FailedCount() << ", behaviour failures: " << match.Failures()
 		          << ", real-time factor: " << Fixed(match.Time() / std::max(wall, 1e-9), 0) << "x\n";
 		if (!log_path.empty()) std::cout << "  log: " << log_path << "\n";
 		if (!svg_path.empty()) std::cout << "  picture: " << svg_path << "\n";
-		return match.Failures() == 0 ? 0 : 1;
+		return match.Failures() == 0 && match.FailedCount() == 0 ? 0 : 1;
 	} catch (const std::exception& error) {
 		std::cerr << "kse-match: " << error.what() << "\n";
 		return 2;

@@ -106,7 +106,7 @@ void JsonLinesLog::OnEvent(const Match& match, const MatchEvent& event) {
 void JsonLinesLog::OnEnd(const Match& match) {
 	std::ostringstream line;
 	line << "{\"type\":\"result\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(match.GetReferee().State())
-	     << "\",\"score\":" << Score(match) << ",\"stuck\":" << match.StuckCount() << ",\"failures\":" << match.Failures() << "}";
+	     << "\",\"score\":" << Score(match) << ",\"stuck\":" << match.StuckCount() << ",\"failed\":" << match.FailedCount() << ",\"failures\":" << match.Failures() << "}";
 	Write(line, match.Time());
 	if (file_) file_->Flush();
 	if (out_) out_->flush();

@@ -27,6 +27,7 @@ extern char** environ;
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using Clock = std::chrono::steady_clock;
 
 /** Whether a text is one JSON value (RFC 8259), nothing more. */
@@ -154,7 +155,8 @@ double LastFrameTime(const std::vector<std::string>& lines) {
 /** The test kse-match as a child process, its standard error in a file. */
 class Child {
 public:
-	explicit Child(const std::vector<std::string>& arguments, const std::string& name) : err_path_(Scratch(name + ".err")) {
+	explicit Child(const std::vector<std::string>& arguments, const std::string& name)
+		: err_path_(Scratch(name + ".err")), out_path_(Scratch(name + ".out")) {
 		// Everything the child needs is made before fork(): after it, only async-signal-safe calls.
 		std::vector<std::string> strings = {KSE_TEST_MATCH};
 		strings.insert(strings.end(), arguments.begin(), arguments.end());
@@ -173,7 +175,7 @@ public:
 		pid_ = fork();
 		if (pid_ == 0) {
 			const int err = ::open(err_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-			const int out = ::open("/dev/null", O_WRONLY);
+			const int out = ::open(out_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
 			dup2(err, STDERR_FILENO);
 			dup2(out, STDOUT_FILENO);
 			execve(argv[0], argv.data(), envp.data());
@@ -202,12 +204,14 @@ public:
 	}
 	void Signal(int signal) { kill(pid_, signal); }
 	std::string Err() const { return Read(err_path_); }
+	std::string Out() const { return Read(out_path_); }
 	double Seconds() const { return std::chrono::duration<double>(took_).count(); }
 
 	static std::string Scratch(const std::string& name) { return ::testing::TempDir() + "kse_match_process_" + name; }
 
 private:
 	std::string err_path_;
+	std::string out_path_;
 	pid_t pid_ = -1;
 	bool waited_ = false;
 	Clock::time_point started_ = Clock::now();
@@ -308,3 +312,26 @@ TEST(MatchProcess, RepeatedErrorsAreRateLimitedAndNameTheRobot) {
 }
 
 }  // namespace
+
+TEST(MatchProcess, ARobotGoingRoundALoopWithoutWaitingIsNamedAndTheMatchEnds) {
+	// The Spinner's statechart loops without an activity or a timer: its robot fails at once,
+	// the Runner (whose loop waits only for its activity's run) and the match go on.
+	const std::string log = Child::Scratch("spinner.jsonl");
+	Child run({"--home", "Spinner:1,Runner:2", "--away", "none", "--start-playing", "--duration", "30", "--quiet", "--log", log}, "spinner");
+	const int status = run.Wait();
+	ASSERT_TRUE(WIFEXITED(status)) << "status " << status << "\n" << run.Err();
+	EXPECT_EQ(WEXITSTATUS(status), 1) << "a failed robot\n" << run.Err();
+	EXPECT_LT(run.Seconds(), 10) << "no livelock";
+	EXPECT_THAT(run.Err(), HasSubstr("[home-1 Spinner] statechart 'Node_spinner': RunUntilStable stopped after 10000 transitions: the statechart "
+	                                 "does not settle; it goes round 0.2 'Node_Look' -> 0.3 'Node_0_3' -> 0.2 'Node_Look'"));
+	EXPECT_THAT(run.Out(), HasSubstr("  home-1 Spinner failed at 0.0 s and stood still: the statechart took 10000 transitions in one decision "
+	                                 "cycle, round 0.2 'Node_Look' -> 0.3 'Node_0_3' -> 0.2 'Node_Look'"));
+	EXPECT_THAT(run.Out(), HasSubstr("failed robots: 1"));
+	const auto lines = Lines(Read(log));
+	ExpectEveryLineIsJson(lines);
+	EXPECT_GE(LastFrameTime(lines), 29.9) << "the match went on to its end";
+	EXPECT_EQ(lines.back().rfind("{\"type\":\"result\",\"t\":30.00,", 0), 0u) << lines.back();
+	EXPECT_THAT(lines.back(), HasSubstr("\"failed\":1"));
+	EXPECT_THAT(Read(log), HasSubstr("\"event\":\"failed\",\"team\":0,\"robot\":\"home-1\",\"detail\":\"the statechart took 10000"));
+	EXPECT_THAT(Read(log), Not(HasSubstr("\"event\":\"failed\",\"team\":0,\"robot\":\"home-2\"")));
+}

@@ -135,6 +135,59 @@ TEST(Match, AStatechartThatStopsIsReportedStuck) {
 	EXPECT_TRUE(reported);
 }
 
+TEST(Match, ALoopWhoseOnlyWaitIsItsActivityGoesRoundOncePerDecisionCycle) {
+	// runner = Wake.Chase~ : on a robot each Chase run takes time on a worker; in the simulator
+	// it lasts until the robot's next decision cycle, so the robot plays instead of spinning.
+	MatchConfig config;
+	config.start_playing = true;
+	config.home.players.push_back({"Runner", 1, std::nullopt, {}});
+	config.away.players.clear();
+	std::ostringstream text;
+	JsonLinesLog log(text);
+	Match match(config);
+	match.AddObserver(log);
+	match.Run(10);
+	EXPECT_EQ(match.FailedCount(), 0u);
+	EXPECT_EQ(match.StuckCount(), 0u);
+	const std::string all = text.str();
+	EXPECT_EQ(all.find("\"event\":\"failed\""), std::string::npos);
+	// about one round of the loop (two segments: into the connector, back to Chase) per cycle
+	const std::size_t rounds = Count(all, "\"Node_0_3_3_TO_Node_Chase\"");
+	const double cycles = 10 / (Match::kTick * Match::kTicksPerFrame);
+	EXPECT_GT(rounds, cycles * 0.9) << "a round in (almost) every decision cycle";
+	EXPECT_LE(rounds, cycles + 1) << "never more than one round per decision cycle";
+	EXPECT_GT(match.GetWorld().bodies[0].pose.x, -4.0) << "the runner walked (towards the ball)";
+}
+
+TEST(Match, ARobotGoingRoundALoopWithoutWaitingFailsAndTheMatchGoesOn) {
+	MatchConfig config;
+	config.start_playing = true;
+	config.home.players.push_back({"Spinner", 1, std::nullopt, {}});
+	config.away.players.push_back({"Chaser", 1, std::nullopt, {}});
+	std::ostringstream text;
+	JsonLinesLog log(text);
+	Match match(config);
+	match.AddObserver(log);
+	match.Run(20);
+	EXPECT_EQ(match.Time(), 20.0) << "the match went on to its end";
+	EXPECT_EQ(match.FailedCount(), 1u);
+	EXPECT_EQ(match.StuckCount(), 0u) << "a failed robot is not reported stuck as well";
+	std::size_t failed = 0;
+	for (const auto& event : match.Events()) {
+		if (event.type != "failed") continue;
+		++failed;
+		EXPECT_EQ(event.robot, 0);
+		EXPECT_LT(event.time, 0.1);
+		EXPECT_EQ(event.detail, "the statechart took 10000 transitions in one decision cycle, round 0.2 'Node_Look' -> 0.3 'Node_0_3' -> "
+		                        "0.2 'Node_Look', without waiting for an activity or a timer");
+	}
+	EXPECT_EQ(failed, 1u) << "reported once";
+	const auto lines = Lines(text.str());
+	EXPECT_NE(text.str().find("\"event\":\"failed\",\"team\":0,\"robot\":\"home-1\""), std::string::npos);
+	EXPECT_NE(lines.back().find("\"failed\":1"), std::string::npos) << lines.back();
+	EXPECT_GT(Count(text.str(), "\"Node_Chase_TO_Node_Chase\""), 150u) << "the other robot played on (a round every 100 ms)";
+}
+
 TEST(Match, AFullGameGoesThroughTheStatesAndThePictureShowsIt) {
 	MatchConfig config = Chasers(5);
 	config.start_playing = false;

@@ -1,7 +1,8 @@
 #pragma once
 // Small statecharts written against the engine for the simulator's own tests (the real
 // behaviours live in examples/): a Chaser that walks to the ball and kicks it towards the
-// opponent goal, a Sleeper whose statechart stops after its first state, and chasers that go
+// opponent goal, a Runner that chases in a loop with nothing to wait on but its activity, a
+// Spinner that loops without even that, a Sleeper whose statechart stops after its first state, and chasers that go
 // wrong after a while: a Thrower (throws in every cycle from its second), a Hanger (never
 // returns, after 2 s of play) and a Crasher (writes through a null pointer after 3 s).
 
@@ -157,7 +158,57 @@ private:
 	statechart_engine::Statechart chart_;
 };
 
+// runner = Wake.Chase~ as the formula's transformation makes it: nothing waits in the loop but
+// the Chase activity's run (on a robot, its time on a worker).
+class RunnerChart : public statechart_engine::IStatechart {
+public:
+	RunnerChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_runner", hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* wake = chart_.Add<BasicState>("Node_Wake", &chart_, std::make_unique<Idle>());
+		auto* loop = chart_.Add<OrState>("Node_0_3", &chart_);
+		auto* loop_start = chart_.Add<StartState>("Node_0_3_1", loop);
+		auto* chase = chart_.Add<BasicState>("Node_Chase", loop, std::make_unique<Chase>());
+		auto* again = chart_.Add<ConditionConnector>("Node_0_3_3", loop);
+		chart_.AddTransition(start, wake);
+		chart_.AddTransition(wake, loop);
+		chart_.AddTransition(loop_start, chase);
+		chart_.AddTransition(chase, again);
+		chart_.AddTransition(again, chase);
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
+// START -> Look, then round Look and a connector for ever: no activity, no timer, nothing waits.
+class SpinnerChart : public statechart_engine::IStatechart {
+public:
+	SpinnerChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_spinner", hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* look = chart_.Add<BasicState>("Node_Look", &chart_);
+		auto* decide = chart_.Add<ConditionConnector>("Node_0_3", &chart_);
+		look->SetLabel("0.2");
+		decide->SetLabel("0.3");
+		chart_.AddTransition(start, look);
+		chart_.AddTransition(look, decide);
+		chart_.AddTransition(decide, look);
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
 inline const statechart_engine::StatechartRegistrar<ChaserChart> chaser_registrar("Chaser");
+inline const statechart_engine::StatechartRegistrar<RunnerChart> runner_registrar("Runner");
+inline const statechart_engine::StatechartRegistrar<SpinnerChart> spinner_registrar("Spinner");
 inline const statechart_engine::StatechartRegistrar<FailingChart<Throws>> thrower_registrar("Thrower");
 inline const statechart_engine::StatechartRegistrar<FailingChart<Hangs>> hanger_registrar("Hanger");
 inline const statechart_engine::StatechartRegistrar<FailingChart<Crashes>> crasher_registrar("Crasher");

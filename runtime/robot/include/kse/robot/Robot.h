@@ -3,6 +3,7 @@
 // robot perceives through the standard messages (docs/robot-messages.md) and giving back
 // the motion its activities command. The simulator (or a real robot) owns the loop.
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,18 +66,31 @@ struct MotionCommands {
 
 class Robot {
 public:
+	/** The transitions one decision cycle may take before the robot counts as failed. */
+	static constexpr std::size_t kTransitionsPerCycle = 10000;
+
 	/**
 	 * Runs the statechart registered as {@code behaviour}; activities run inline, so stepping is
-	 * deterministic. The engine's reports (failures, watchdog overruns) go to {@code reporter}
-	 * (standard error when empty).
+	 * deterministic, and each run lasts until the next decision cycle, as a run on a robot's
+	 * worker takes time: a loop through an activity goes round once per cycle. The engine's
+	 * reports (failures, watchdog overruns) go to {@code reporter} (standard error when empty).
 	 */
 	Robot(const std::string& behaviour, const messaging::Clock& clock, statechart_engine::Reporter reporter = {});
 	~Robot();
 	Robot(const Robot&) = delete;
 	Robot& operator=(const Robot&) = delete;
 
-	/** Publishes the perception, runs the statechart to a stable state and collects the motion commands. */
+	/**
+	 * Publishes the perception, runs the statechart to a stable state and collects the motion
+	 * commands. A statechart that takes kTransitionsPerCycle transitions in one cycle goes round
+	 * a loop without waiting for anything: the robot is then failed (Failed()), stands still and
+	 * no longer runs its statechart.
+	 */
 	MotionCommands Step(const Perception& perception);
+
+	/** Whether the robot stopped for good, and why ("" while it runs). */
+	bool Failed() const { return !failure_.empty(); }
+	const std::string& Failure() const { return failure_; }
 
 	statechart_engine::Statechart& Chart() { return statechart_->Chart(); }
 	const std::string& Behaviour() const { return behaviour_; }
@@ -90,6 +104,7 @@ private:
 	messaging::Blackboard motion_;
 	std::unique_ptr<Recycling> recycling_;
 	std::unique_ptr<statechart_engine::IStatechart> statechart_;
+	std::string failure_;
 };
 
 }  // namespace kse::robot

@@ -60,7 +60,7 @@ struct MatchConfig {
 /** Anything worth a line in the log. */
 struct MatchEvent {
 	double time = 0;
-	std::string type;  // state, goal, ball-out, penalty, unpenalised, placed, half-time, game-stuck, penalty-shoot-out, gamecontroller, kick, missed-kick, fall, stuck, failure
+	std::string type;  // state, goal, ball-out, penalty, unpenalised, placed, half-time, game-stuck, penalty-shoot-out, gamecontroller, kick, missed-kick, fall, stuck, failed
 	int team = -1;
 	int robot = -1;
 	std::string detail;
@@ -125,6 +125,8 @@ public:
 
 	const std::vector<MatchEvent>& Events() const { return events_; }
 	std::size_t StuckCount() const { return stuck_; }
+	/** Robots whose behaviour failed for good (robot::Robot::Failed()): they stand still. */
+	std::size_t FailedCount() const { return failed_; }
 	std::size_t Failures() const;
 	/** Wall-clock seconds spent in the robots' statecharts (perception published, run, commands read). */
 	double EngineSeconds() const { return engine_seconds_; }
@@ -146,6 +148,7 @@ private:
 		double pinned = 0;
 		Vec2 last_position;
 		bool stuck = false;
+		bool failed = false;
 		Player(PlayerConfig c, std::string i, Random random) : config(std::move(c)), id(std::move(i)), sense(random) {}
 	};
 
@@ -172,6 +175,7 @@ private:
 	bool started_ = false;
 	bool ended_ = false;
 	std::size_t stuck_ = 0;
+	std::size_t failed_ = 0;
 	double engine_seconds_ = 0;
 	mutable std::vector<Pose2> ready_poses_;  // ReadyPoses(), for ready_key_
 	mutable std::array<int, 3> ready_key_{};  // kicking team, sides of the teams

@@ -52,6 +52,7 @@ public class StatechartValidator implements EValidator {
 	public static final int MESSAGE = 15;
 	public static final int EVENT = 16;
 	public static final int DEPTH = 17;
+	public static final int WAITLESS_LOOP = 18;
 
 	/** KSE's limit on nesting, far above any behaviour (the Goalie nests 7 levels): the engine and the generated code recurse over it. */
 	public static final int MAX_DEPTH = 1_000;
@@ -80,7 +81,7 @@ public class StatechartValidator implements EValidator {
 			return true;
 		}
 		if (object instanceof Model model) {
-			validateModel(model, diagnostics);
+			validateModel(model, diagnostics, context);
 		} else if (object instanceof Node node) {
 			validateNode(node, diagnostics, context);
 		} else if (object instanceof Transition transition) {
@@ -91,7 +92,7 @@ public class StatechartValidator implements EValidator {
 		return true;
 	}
 
-	private void validateModel(Model model, DiagnosticChain diagnostics) {
+	private void validateModel(Model model, DiagnosticChain diagnostics, Map<Object, Object> context) {
 		if (model.getNodes().size() != 1) {
 			error(diagnostics, ROOT, model, "the model needs exactly one root state; it has " + model.getNodes().size());
 		}
@@ -113,6 +114,25 @@ public class StatechartValidator implements EValidator {
 				}
 			}
 		}
+		ExpressionParser.Session session = expressions(context);
+		for (WaitlessLoops.Loop loop : WaitlessLoops.find(model, session == null ? ExpressionParser.session() : session)) {
+			warning(diagnostics, WAITLESS_LOOP, loop.transition(), waitlessLoopMessage(loop));
+		}
+	}
+
+	private static String waitlessLoopMessage(WaitlessLoops.Loop loop) {
+		StringBuilder states = new StringBuilder();
+		for (Node node : loop.states()) {
+			states.append(states.isEmpty() ? "" : " -> ").append(Labels.describe(node));
+		}
+		if (!loop.runsActivities()) {
+			return "the loop " + states + " runs no activity and waits for no message or timer: the engine goes round it without end"
+					+ " (the simulator stops the robot); give one of its transitions a condition";
+		}
+		return "the loop " + states + " waits only for its activities' runs: on a robot it runs them again as soon as they return,"
+				+ " in the simulator once per decision cycle. To poll, wait for a timer: give one of its transitions"
+				+ " [TimeoutCheck(behavior)]/TimeoutAction.behavior.250, the transition into the loop /TimeoutAction.behavior.250,"
+				+ " and the unguarded exits of the composites around it a condition (they are taken while the loop waits)";
 	}
 
 	private void validateNode(Node node, DiagnosticChain diagnostics, Map<Object, Object> context) {
