@@ -13,7 +13,8 @@
 #      `kse generate`, built against the installed runtime and driven by scripted messages;
 #   4. the examples built with their activities, driven by scripts and played on the simulated
 #      field (scenarios over 20 seeds), a short match, the simulator's benchmark; projects outside
-#      the repository built with the runtime's CMake package and with the KSE Maven plugin; `kse demo`;
+#      the repository built with the runtime's CMake package and with the KSE Maven plugin; the
+#      getting-started page followed command by command; `kse demo`;
 #   5. the command line's start benchmark and a smoke run of the kse command on the bundled example.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -99,6 +100,9 @@ echo "== A short match (log and picture under $out/match.*) and the simulator's 
 
 echo "== A project outside the repository builds its behaviour with the runtime's CMake package (kse_add_statechart)"
 tests/cmake-package/run.sh "$out/runtime-prefix" "$out/cmake-package"
+
+echo "== Getting started: docs/getting-started.md's commands in a fresh folder (kse new-behaviour, build, play, edit, play again; name clashes)"
+tests/getting-started/run.sh "$out/runtime-prefix" "$out/getting-started"
 
 echo "== A Maven build outside the repository validates and generates offline (kse:validate, kse:generate, incremental skip)"
 tests/maven-plugin/run.sh

@@ -27,7 +27,9 @@ step "1/4 validating the example models"
 "$here/kse" validate "$here"/examples/{Goalie/Goalie,Attacker/Attacker,Defender/Defender}.stct
 
 prefix="${KSE_RUNTIME_PREFIX:-}"
+own_prefix=""
 if [ -z "$prefix" ]; then
+  own_prefix=yes
   step "2/4 building and installing the C++ runtime (log: $out/runtime.log)"
   prefix="$out/runtime-prefix"
   {
@@ -43,8 +45,11 @@ fi
 step "3/4 building the examples against it, their statecharts generated from the models (log: $out/examples.log)"
 {
   cmake -S "$here/examples" -B "$out/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
-    -DCMAKE_PREFIX_PATH="$prefix"
-  cmake --build "$out/examples" -j 2 --target kse-match
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_INSTALL_PREFIX="$prefix"
+  cmake --build "$out/examples" -j 2
+  # the examples installed beside the runtime it built (never into a prefix it was given), so that
+  # a project of one's own (kse new-behaviour, docs/getting-started.md) plays against them
+  if [ -n "$own_prefix" ]; then cmake --install "$out/examples"; fi
 } > "$out/examples.log" 2>&1 || { tail -n 30 "$out/examples.log" >&2; exit 1; }
 
 step "4/4 playing Goalie, Defender and Attacker against themselves: a ${half}-second half, seed $seed"
@@ -52,3 +57,6 @@ step "4/4 playing Goalie, Defender and Attacker against themselves: a ${half}-se
   --home Goalie:1,Defender:2,Attacker:3 --away Goalie:1,Defender:2,Attacker:3 \
   --log "$out/match.jsonl" --svg "$out/match.svg"
 echo "Open $out/match.svg to see the match; $out/match.jsonl is its log."
+if [ -n "$own_prefix" ]; then
+  echo "The runtime and the examples are installed in $prefix: docs/getting-started.md builds a behaviour of your own against them."
+fi

@@ -33,6 +33,18 @@
 #       the folders `kse generate <model> <source-folder>` writes once). MESSAGES: folders of the
 #       project's own .proto files the guards read; LOGGER: conditions print their result.
 #       The kse command is KSE_EXECUTABLE (a cache variable), else `kse` on the PATH.
+#
+#   kse_add_activities(<var> <folder>)
+#       Every activity folder under <folder> added to the build (the folders `kse generate`
+#       and `kse new-behaviour` write: <folder>/<Activity>/ with a CMakeLists.txt making the
+#       OBJECT library activity_<Activity>; a folder without CMakeLists.txt, such as common/,
+#       is left alone); the targets in <var>, to link into the program directly.
+#
+#   Names: activities and statecharts register by name in one registry per program, so each
+#   name may be taken once. kse_add_statechart and kse_add_activities claim their names in the
+#   configuring project, and so do installed behaviour packages (kse_examples); a name claimed
+#   twice stops the configuration naming both (ADR 0029). kse_claim_name(<kind> <name> <origin>)
+#   is the check, for a package that brings its own behaviours.
 
 include_guard(GLOBAL)
 set(_KSE_GENERATE_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/KseGenerate.cmake)
@@ -140,6 +152,41 @@ function(kse_add_behavior target)
   target_compile_features(${target} PUBLIC cxx_std_17)
 endfunction()
 
+function(kse_claim_name kind name origin)
+  get_property(_owner GLOBAL PROPERTY KSE_CLAIMED_${kind}_${name})
+  if(_owner AND NOT _owner STREQUAL origin)
+    message(FATAL_ERROR "the ${kind} '${name}' of ${origin} has the name of the ${kind} '${name}' of ${_owner}: "
+      "${kind} names are global in a program (kse-match registers each name once), rename one "
+      "(in its formula, then its folder under activities/ and its registrar's name)")
+  endif()
+  set_property(GLOBAL PROPERTY KSE_CLAIMED_${kind}_${name} "${origin}")
+endfunction()
+
+function(kse_add_activities var folder)
+  if(ARGN)
+    message(FATAL_ERROR "kse_add_activities(${var} ${folder}): unknown arguments ${ARGN}")
+  endif()
+  get_filename_component(_root ${folder} ABSOLUTE)
+  if(NOT IS_DIRECTORY ${_root})
+    message(FATAL_ERROR "kse_add_activities(${var}): no folder ${_root}")
+  endif()
+  # CONFIGURE_DEPENDS: a new activity folder (kse generate ... --no-statechart) joins at the next build
+  file(GLOB _folders LIST_DIRECTORIES true CONFIGURE_DEPENDS ${_root}/*)
+  set(_targets "")
+  foreach(_dir IN LISTS _folders)
+    if(IS_DIRECTORY ${_dir} AND EXISTS ${_dir}/CMakeLists.txt)
+      get_filename_component(_name ${_dir} NAME)
+      kse_claim_name(activity ${_name} ${_dir})
+      add_subdirectory(${_dir} ${CMAKE_CURRENT_BINARY_DIR}/kse_activities/${_name})
+      if(NOT TARGET activity_${_name})
+        message(FATAL_ERROR "kse_add_activities: ${_dir}/CMakeLists.txt does not make the target activity_${_name}")
+      endif()
+      list(APPEND _targets activity_${_name})
+    endif()
+  endforeach()
+  set(${var} ${_targets} PARENT_SCOPE)
+endfunction()
+
 function(kse_add_statechart name model)
   cmake_parse_arguments(ARG "LOGGER" "" "MESSAGES" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
@@ -157,6 +204,7 @@ function(kse_add_statechart name model)
   if(NOT EXISTS ${_model})
     message(FATAL_ERROR "kse_add_statechart(${name}): no model ${_model}")
   endif()
+  kse_claim_name(statechart ${name} ${_model})
   set(_messages "")
   set(_protos "")
   foreach(_dir IN LISTS ARG_MESSAGES)

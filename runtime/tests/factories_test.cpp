@@ -188,6 +188,40 @@ TEST(Factories, DuplicateRegistrationKeepsTheFirst) {
   EXPECT_FALSE(factory.Contains("TemporaryActivity"));
 }
 
+TEST(Factories, ADuplicateRegistrationIsAClashNamingBothOrigins) {
+  auto& factory = ActivityFactory::Instance();
+  const auto before = factory.Clashes().size();
+  ASSERT_TRUE(factory.Register("ClashingActivity", [] { return std::unique_ptr<IActivity>(new TestKick()); },
+                               "/team/src/activities/ClashingActivity/ClashingActivity.cpp"));
+  ::testing::internal::CaptureStderr();
+  EXPECT_FALSE(factory.Register("ClashingActivity", [] { return std::unique_ptr<IActivity>(new TestKick()); },
+                                "/examples/src/activities/ClashingActivity/ClashingActivity.cpp"));
+  EXPECT_THAT(::testing::internal::GetCapturedStderr(),
+              HasSubstr("activity 'ClashingActivity' is registered twice: by /team/src/activities/ClashingActivity/"
+                        "ClashingActivity.cpp and by /examples/src/activities/ClashingActivity/ClashingActivity.cpp"));
+  const auto clashes = factory.Clashes();
+  ASSERT_EQ(clashes.size(), before + 1);
+  EXPECT_THAT(clashes.back(), HasSubstr("/team/src/activities/ClashingActivity/ClashingActivity.cpp"));
+  EXPECT_THAT(clashes.back(), HasSubstr("/examples/src/activities/ClashingActivity/ClashingActivity.cpp"));
+  EXPECT_TRUE(factory.Unregister("ClashingActivity"));
+}
+
+TEST(Factories, RegistrarsNameTheirSourceFile) {
+  // TestScan is registered at the top of this file, and again here: both registrars are in
+  // this file, and the clash names it twice (the caller's file, not Factories.h)
+  struct Local : IActivity {
+    int Execute() override { return 0; }
+    std::string GetName() override { return "TestScan"; }
+  };
+  auto& factory = ActivityFactory::Instance();
+  ::testing::internal::CaptureStderr();
+  const ActivityRegistrar<Local> again("TestScan");
+  const std::string message = ::testing::internal::GetCapturedStderr();
+  EXPECT_THAT(message, ::testing::ContainsRegex("activity 'TestScan' is registered twice: by [^ ]*factories_test\\.cpp "
+                                                "and by [^ ]*factories_test\\.cpp"));
+  EXPECT_THAT(factory.Clashes().back(), ::testing::Not(HasSubstr("Factories.h")));
+}
+
 TEST(Factories, RegisteredStatechartsAreCreatedByName) {
   ManualClock clock;
   MessageHub hub(clock);

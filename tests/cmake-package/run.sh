@@ -5,7 +5,8 @@
 # (2) a build with nothing changed does nothing, (3) a changed model is generated and compiled
 # again, (4) a model with an error stops the build with the model's diagnostic, (5) a call named
 # otherwise than the model says which name to use; and (6) the activity skeletons `kse generate`
-# writes for every example compile and link as written, untouched (issue 18, item 3).
+# writes for every example compile and link as written, untouched (issue 18, item 3); and (7) the
+# complete activity of docs/writing-activities.md builds as the page says and chases the ball.
 #   usage: tests/cmake-package/run.sh <runtime-prefix> <out-folder>
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -87,4 +88,30 @@ cmake --build "$out/skeletons-build" -j 2 > "$out/skeletons.build.log" 2>&1 || {
 "$out/skeletons-build/skeleton-match" --list > "$out/skeletons.list"
 for model in Goalie Attacker Defender; do grep -qx "$model" "$out/skeletons.list" || fail "skeleton-match does not list $model"; done
 echo "   skeletons: the $(ls "$skeletons/src/activities" | wc -l) activities of the three examples compile and link as generated"
+
+# (7) The complete activity of docs/writing-activities.md (tests/cmake-package/chaser holds the
+# files the page prints; DocumentationPagesTest checks that the page prints them and these
+# commands as they are): the page's commands make the model, the project builds, and the robot
+# chases the ball in a match.
+chaser="$out/chaser"
+cp -r "$here/tests/cmake-package/chaser" "$chaser"
+(
+  cd "$chaser"
+  kse() { "$here/kse" "$@"; }
+  mkdir -p models
+  printf 'chaser = ChaseBall~\n' > models/chaser.liveness
+  kse transform models/chaser.liveness -o models/chaser.stct
+  kse edit-transition models/chaser.stct 0.1 ChaseBall --expression '/TimeoutAction.behavior.100'
+  kse edit-transition models/chaser.stct ChaseBall ChaseBall --expression '[TimeoutCheck(behavior)]/TimeoutAction.behavior.100'
+  kse validate models/chaser.stct
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DKSE_EXECUTABLE="$here/kse"
+  cmake --build build -j 2
+  ./build/chaser-match --home chaser:2 --away none --half 30 --start-playing --log chase.jsonl
+) > "$out/chaser.log" 2>&1 || { tail -30 "$out/chaser.log"; fail "the example of docs/writing-activities.md did not build or play"; }
+# the robot walks while in ChaseBall, and has pushed the ball 0.3 m or more up the field by the end
+grep -q '"motion":"walk","penalty":0,"ballSeen":[a-z]*,"active":\["Node_chaser","Node_ChaseBall"\]' "$chaser/chase.jsonl" \
+  || fail "the chaser's robot never walked in ChaseBall ($chaser/chase.jsonl)"
+ball_x="$(grep '"type":"frame"' "$chaser/chase.jsonl" | tail -n 1 | sed 's/.*"ball":\[\([-0-9.]*\),.*/\1/')"
+awk -v x="$ball_x" 'BEGIN { exit !(x >= 0.3) }' || fail "the chaser did not push the ball up the field (ball at x = $ball_x m at the end)"
+echo "   docs/writing-activities.md: ChaseBall built and played, the ball pushed to x = $ball_x m"
 echo "cmake-package: an outside project builds its behaviour with kse_add_statechart"

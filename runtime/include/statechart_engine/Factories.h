@@ -10,6 +10,15 @@
 #include "statechart_engine/Registry.h"
 #include "statechart_engine/Statechart.h"
 
+// Where a registrar is declared: the source file of the activity or statechart that declares it
+// (a default argument evaluated at the caller), so that two registrations of one name say which
+// files they come from.
+#if defined(__GNUC__) || defined(__clang__) || (defined(_MSC_VER) && _MSC_VER >= 1926)
+#define KSE_REGISTRAR_ORIGIN __builtin_FILE()
+#else
+#define KSE_REGISTRAR_ORIGIN ""
+#endif
+
 namespace statechart_engine {
 
 // The registries are compiled once, in the library (Factories.cpp).
@@ -33,8 +42,8 @@ class ActivityRegistrar {
  public:
   using Type = ActivityRegistrar<T>;  // Monas spelling: ActivityRegistrar<T>::Type temp("T");
 
-  explicit ActivityRegistrar(const std::string& name) {
-    ActivityFactory::Instance().Register(name, [] { return std::unique_ptr<IActivity>(new T()); });
+  explicit ActivityRegistrar(const std::string& name, const char* origin = KSE_REGISTRAR_ORIGIN) {
+    ActivityFactory::Instance().Register(name, [] { return std::unique_ptr<IActivity>(new T()); }, origin);
   }
 };
 
@@ -74,11 +83,11 @@ class StatechartRegistrar {
  public:
   using Type = StatechartRegistrar<T>;  // Monas spelling: StatechartRegistrar<T>::Type temp("T");
 
-  explicit StatechartRegistrar(const std::string& name) {
+  explicit StatechartRegistrar(const std::string& name, const char* origin = KSE_REGISTRAR_ORIGIN) {
     StatechartFactory::Instance().Register(
         name, [](kse::messaging::MessageHub& hub, const Options& options) {
           return std::unique_ptr<IStatechart>(new T(hub, options));
-        });
+        }, origin);
   }
 };
 

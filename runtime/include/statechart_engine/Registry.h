@@ -26,19 +26,36 @@ class Registry {
   /// `product` names what is created, in the messages: "activity", "statechart".
   explicit Registry(std::string product) : product_(std::move(product)) {}
 
-  /// Registers a creator; false (and a warning) when the name is taken, the first one stays.
-  bool Register(const std::string& name, Creator creator) {
+  /// Registers a creator; false (and a warning naming both) when the name is taken, the
+  /// first one stays and the clash is kept for Clashes(). `origin` says where the creator
+  /// comes from (the registrars pass their source file), so that a clash names both.
+  bool Register(const std::string& name, Creator creator, const std::string& origin = {}) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!creators_.emplace(name, std::move(creator)).second) {
-      detail::Warn(product_ + " '" + name + "' is registered twice; the first registration stays");
+    auto found = creators_.find(name);
+    if (found != creators_.end()) {
+      const std::string first = origins_[name].empty() ? "an unnamed registrar" : origins_[name];
+      const std::string second = origin.empty() ? "an unnamed registrar" : origin;
+      clashes_.push_back(product_ + " '" + name + "' is registered twice: by " + first + " and by " + second);
+      detail::Warn(clashes_.back() + "; the first registration stays");
       return false;
     }
+    creators_.emplace(name, std::move(creator));
+    origins_[name] = origin;
     return true;
   }
 
   bool Unregister(const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
+    origins_.erase(name);
     return creators_.erase(name) != 0;
+  }
+
+  /// Every registration refused because its name was taken, each naming both registrars. A
+  /// program that plays behaviours stops on one (kse-match does): which of two activities of
+  /// one name a statechart runs would depend on the order the linker put them in (ADR 0029).
+  std::vector<std::string> Clashes() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return clashes_;
   }
 
   /// A new product, or nullptr (with a message on standard error) when the name is unknown.
@@ -78,6 +95,8 @@ class Registry {
   const std::string product_;
   mutable std::mutex mutex_;
   std::map<std::string, Creator> creators_;
+  std::map<std::string, std::string> origins_;
+  std::vector<std::string> clashes_;
 };
 
 }  // namespace statechart_engine

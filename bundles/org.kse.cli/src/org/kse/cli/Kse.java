@@ -48,6 +48,8 @@ public final class Kse {
 			                      renumber labels and rename states and transitions
 			  generate <model.stct>... <source-folder> | -o <source-folder> [--logger]
 			                      write the Monas C++ of models into a source tree
+			  new-behaviour NAME [-o DIR]
+			                      start a project of your own behaviour that builds and plays
 			  diagram <model.stct>... [-o diagram.svg] [--arrange] [--save-notation]
 			                      draw statecharts as SVG pictures
 			  edit-transition <model.stct> <from> <to> --expression TEXT
@@ -95,7 +97,7 @@ public final class Kse {
 
 	private static final String GENERATE_HELP = """
 			usage: kse generate <model.stct>... (<source-folder> | -o <source-folder>)
-			                    [--logger] [--no-activities] [--messages DIR]... [--quiet]
+			                    [--logger] [--no-activities] [--no-statechart] [--messages DIR]... [--quiet]
 
 			Writes the Monas C++ of each valid model into a source folder: statecharts/<Model>/
 			(the statechart class, one class per guard and per action list, CMakeLists.txt) and
@@ -110,7 +112,23 @@ public final class Kse {
 			  --logger           conditions print their result when evaluated
 			  --no-activities    write the statecharts only, no activity skeletons (for a build
 			                     that generates into its build tree: CMake's kse_add_statechart)
+			  --no-statechart    write only the skeletons of new activities (for a project whose
+			                     build generates the statechart: kse new-behaviour's)
 			  -q, --quiet        no progress lines""";
+
+	private static final String NEW_BEHAVIOUR_HELP = """
+			usage: kse new-behaviour NAME [-o DIR]
+
+			Makes a project of your own behaviour NAME that builds and plays as made, Monas-style:
+			NAME.liveness (its formula), NAME.stct (the formula's statechart, labelled, with the
+			guards and timers that make it play: 0 errors, 0 warnings), src/activities/ (its two
+			activities, Wait and Chase, which compile as written and walk at the ball),
+			CMakeLists.txt (finds the installed KSE runtime and examples, generates the statechart
+			while building, builds kse-match with NAME and the example behaviours) and README.md.
+			Prints the commands that build it and play it against the examples.
+			NAME is a C++ identifier starting with a capital letter, and not the name of an
+			example behaviour or activity. The folder must not exist, or be empty.
+			  -o, --output DIR   the project's folder (default: ./NAME)""";
 
 	private static final String DIAGRAM_HELP = """
 			usage: kse diagram <model.stct>... [-o diagram.svg] [--arrange] [--save-notation]
@@ -193,6 +211,7 @@ public final class Kse {
 				case "validate" -> validate(rest);
 				case "label" -> label(rest);
 				case "generate" -> generate(rest);
+				case "new-behaviour" -> newBehaviour(rest);
 				case "diagram" -> diagram(rest);
 				case "edit-transition" -> editTransition(rest);
 				case "demo" -> rest.contains("--help") || rest.contains("-h") ? help(List.of("demo"))
@@ -239,6 +258,7 @@ public final class Kse {
 			case "validate" -> VALIDATE_HELP;
 			case "label" -> LABEL_HELP;
 			case "generate" -> GENERATE_HELP;
+			case "new-behaviour" -> NEW_BEHAVIOUR_HELP;
 			case "diagram" -> DIAGRAM_HELP;
 			case "edit-transition" -> EDIT_TRANSITION_HELP;
 			case "demo" -> DEMO_HELP;
@@ -380,7 +400,7 @@ public final class Kse {
 	}
 
 	private int generate(List<String> args) throws IOException, UsageException {
-		Options options = Options.parse(args, List.of("--messages", "-o", "--output"), List.of("--logger", "--no-activities", "-q", "--quiet"));
+		Options options = Options.parse(args, List.of("--messages", "-o", "--output"), List.of("--logger", "--no-activities", "--no-statechart", "-q", "--quiet"));
 		if (options.help) {
 			out.println(GENERATE_HELP);
 			return OK;
@@ -391,6 +411,9 @@ public final class Kse {
 			throw new UsageException("expected one or more model files and a source folder (as the last argument or with -o)");
 		}
 		quiet = options.flag("-q", "--quiet");
+		if (options.flag("--no-activities") && options.flag("--no-statechart")) {
+			throw new UsageException("--no-activities and --no-statechart together leave nothing to write");
+		}
 		Path folder = Path.of(output != null ? output : options.positional.get(options.positional.size() - 1));
 		return each(models.stream().map(Path::of).toList(), model -> generate(model, folder, options));
 	}
@@ -398,7 +421,8 @@ public final class Kse {
 	private int generate(Path file, Path folder, Options options) throws IOException {
 		Model model = StatechartResources.load(file);
 		try {
-			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages"), !options.flag("--no-activities")),
+			MonasGenerator.Report report = MonasGenerator.generate(model, folder, new MonasGenerator.Options(options.flag("--logger"), options.paths("--messages"), !options.flag("--no-activities"),
+					!options.flag("--no-statechart")),
 					(step, steps, what) -> progress(step, steps, what));
 			note(file, report.replacements(), folder, true);
 			for (ProtoProblem problem : report.messageProblems()) {
@@ -418,6 +442,46 @@ public final class Kse {
 			err.println("kse: " + file + ": " + e.errors().size() + (e.errors().size() == 1 ? " error" : " errors") + ", nothing generated");
 			return INVALID;
 		}
+	}
+
+	private int newBehaviour(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output"), List.of());
+		if (options.help) {
+			out.println(NEW_BEHAVIOUR_HELP);
+			return OK;
+		}
+		String name = options.single("behaviour NAME").toString();
+		String problem = NewBehaviour.nameProblem(name);
+		if (problem != null) {
+			throw new UsageException(problem);
+		}
+		Path folder = Path.of(options.value("-o", "--output") != null ? options.value("-o", "--output") : name);
+		if (Files.exists(folder) && !Files.isDirectory(folder)) {
+			throw new UsageException(folder + " is a file, not a folder: nothing was written");
+		}
+		if (Files.isDirectory(folder)) {
+			try (var entries = Files.list(folder)) {
+				if (entries.findAny().isPresent()) {
+					throw new UsageException(folder + " exists and is not empty: nothing was written (choose another NAME, or -o DIR)");
+				}
+			}
+		}
+		NewBehaviour.Made made = NewBehaviour.make(name, folder);
+		for (Path file : made.files()) {
+			out.println("wrote " + file);
+		}
+		out.println("made " + folder + ": the behaviour " + name + " (" + statistics(made.model()) + "; activities "
+				+ String.join(", ", NewBehaviour.ACTIVITIES) + ")");
+		String prefix = System.getenv("KSE_PREFIX");
+		String build = folder.resolve("build").toString();
+		out.println();
+		out.println("Build it and play it against the examples (the runtime and the examples installed in the prefix,");
+		out.println("and kse on the PATH: " + folder.resolve("README.md") + " says more):");
+		out.println("  cmake -S " + folder + " -B " + build + " -DCMAKE_PREFIX_PATH=" + (prefix == null || prefix.isBlank() ? "<prefix>" : prefix));
+		out.println("  cmake --build " + build + " -j 2");
+		out.println("  " + Path.of(build, "kse-match") + " --home Goalie:1," + name + ":2," + name + ":3 --away Goalie:1,Defender:2,Attacker:3 --log "
+				+ folder.resolve("match.jsonl") + " --svg " + folder.resolve("match.svg"));
+		return OK;
 	}
 
 	private int diagram(List<String> args) throws IOException, UsageException {

@@ -44,9 +44,15 @@ public final class MonasGenerator {
 	 * folder's {@code messages/} that is always read. {@code activities}: whether skeletons of
 	 * new activities are written; a build that generates the statechart into its build tree
 	 * (CMake's kse_add_statechart) keeps the activities in the source tree, so it writes none.
+	 * {@code statechart}: whether the statechart's files are written; such a project asks for the
+	 * skeletons of its new activities alone.
 	 */
-	public record Options(boolean logger, List<Path> messageFolders, boolean activities) {
+	public record Options(boolean logger, List<Path> messageFolders, boolean activities, boolean statechart) {
 		public static final Options DEFAULT = new Options(false, List.of());
+
+		public Options(boolean logger, List<Path> messageFolders, boolean activities) {
+			this(logger, messageFolders, activities, true);
+		}
 
 		public Options(boolean logger) {
 			this(logger, List.of());
@@ -161,12 +167,14 @@ public final class MonasGenerator {
 		List<Path> unchanged = new ArrayList<>();
 		List<Path> kept = new ArrayList<>();
 		List<Path> removed = new ArrayList<>();
-		for (Map.Entry<Path, String> file : owned.entrySet()) {
-			(write(root, file.getKey(), file.getValue()) ? written : unchanged).add(file.getKey());
+		if (options.statechart()) {
+			for (Map.Entry<Path, String> file : owned.entrySet()) {
+				(write(root, file.getKey(), file.getValue()) ? written : unchanged).add(file.getKey());
+			}
+			removeStale(root, chart.resolve("transitions"), owned, removed);
+			removeInterruptedWrites(root, chart);
+			removeInterruptedWrites(root, chart.resolve("transitions"));
 		}
-		removeStale(root, chart.resolve("transitions"), owned, removed);
-		removeInterruptedWrites(root, chart);
-		removeInterruptedWrites(root, chart.resolve("transitions"));
 		removeAbandonedStaging(root);
 		for (Map.Entry<String, Map<String, String>> activity : newActivities.entrySet()) {
 			Path folder = Path.of("activities", activity.getKey());
