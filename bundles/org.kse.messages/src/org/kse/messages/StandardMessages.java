@@ -62,11 +62,11 @@ public final class StandardMessages {
 	private StandardMessages() {
 	}
 
-	/** The standard files, parsed once. */
+	/** The standard files, read once. */
 	public static List<ProtoFile> files() {
 		List<ProtoFile> result = standard;
 		if (result == null) {
-			standard = result = parseStandard();
+			standard = result = readStandard();
 		}
 		return result;
 	}
@@ -80,7 +80,16 @@ public final class StandardMessages {
 		return name.startsWith(FOLDER) && FILES.contains(name.substring(FOLDER.length()));
 	}
 
-	private static List<ProtoFile> parseStandard() {
+	/**
+	 * The standard files as fresh objects: from the data the build parsed them into (ADR 0030),
+	 * or parsed here when that data is missing or was made from other texts.
+	 */
+	private static List<ProtoFile> readStandard() {
+		return PrecomputedCatalog.bundled().orElseGet(StandardMessages::parseStandard);
+	}
+
+	/** The standard files parsed with the {@code .proto} grammar, what the build's data holds. */
+	static List<ProtoFile> parseStandard() {
 		List<ProtoFile> parsed = new ArrayList<>();
 		for (String name : FILES) {
 			parsed.add(ProtoReader.read(Path.of(FOLDER + name), text(name)));
@@ -173,7 +182,7 @@ public final class StandardMessages {
 		List<Replacement> replacements = new ArrayList<>();
 		// Linking a catalog resolves the field types of its files in place: the shared standard
 		// files must never see a user's types, so a merge that drops some works on its own copy.
-		List<ProtoFile> base = files().stream().anyMatch(file -> replaces(file, defined)) ? parseStandard() : files();
+		List<ProtoFile> base = files().stream().anyMatch(file -> replaces(file, defined)) ? readStandard() : files();
 		List<ProtoFile> merged = new ArrayList<>();
 		for (ProtoFile file : base) {
 			List<MessageType> messages = new ArrayList<>();
