@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 
 import org.eclipse.emf.common.util.EList;
+import org.eclipse.emf.ecore.InternalEObject;
 import org.eclipse.emf.ecore.util.InternalEList;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
@@ -55,6 +56,34 @@ final class StctReader {
 
 	private static final byte[][][] ATTRIBUTE_BYTES = java.util.Arrays.stream(ATTRIBUTES)
 			.map(names -> java.util.Arrays.stream(names).map(name -> name.getBytes(StandardCharsets.US_ASCII)).toArray(byte[][]::new)).toArray(byte[][][]::new);
+
+	/**
+	 * For each attribute whose name and {@code =} fit in eight bytes, those bytes as a little-endian
+	 * long and the mask of them (0 for the longer names); {@link #nameAndEquals} tells that
+	 * {@link #attributeIndex} stepped over both.
+	 */
+	private static final long[][] EQUALS_WORDS = new long[ATTRIBUTES.length][];
+	private static final long[][] EQUALS_MASKS = new long[ATTRIBUTES.length][];
+
+	static {
+		for (int kind = 0; kind < ATTRIBUTES.length; kind++) {
+			EQUALS_WORDS[kind] = new long[ATTRIBUTES[kind].length];
+			EQUALS_MASKS[kind] = new long[ATTRIBUTES[kind].length];
+			for (int index = 0; index < ATTRIBUTES[kind].length; index++) {
+				byte[] bytes = (ATTRIBUTES[kind][index] + "=").getBytes(StandardCharsets.US_ASCII);
+				if (bytes.length <= 8) {
+					long word = 0;
+					for (int i = bytes.length - 1; i >= 0; i--) {
+						word = word << 8 | (bytes[i] & 0xFF);
+					}
+					EQUALS_WORDS[kind][index] = word;
+					EQUALS_MASKS[kind][index] = bytes.length == 8 ? -1L : (1L << (8 * bytes.length)) - 1;
+				}
+			}
+		}
+	}
+
+	private boolean nameAndEquals;
 
 	/**
 	 * Eight bytes read as one long, and the constants that find a byte in them: a byte of
@@ -234,6 +263,7 @@ final class StctReader {
 			throw notOurs("a depth limit that leaves no room for a model");
 		}
 		Model model = FACTORY.createModel();
+		roots = (InternalEList<Node>) model.getNodes();
 		boolean empty = rootAttributes(model);
 		if (!empty) {
 			push(model, "statechart:Model");
@@ -309,7 +339,56 @@ final class StctReader {
 		at += tag.length();
 		skipSpace();
 		expect('>');
+		if (pendingCounts[depth - 1] > 0) {
+			adopt((Node) open[depth - 1], depth - 1);
+		}
 		open[--depth] = null;
+	}
+
+	/**
+	 * The states read inside each open state, given to it at its end tag (one list made at its
+	 * size, each state's container set once): a state is given its children before it has a
+	 * container itself, so setting a container does not climb up to the model each time, and no
+	 * list grows by copies.
+	 */
+	private Object[][] pending = new Object[64][];
+	private int[] pendingCounts = new int[64];
+
+	private void pend(Node child) {
+		int level = depth - 1;
+		Object[] states = pending[level];
+		int count = pendingCounts[level];
+		if (states == null) {
+			states = pending[level] = new Object[16];
+		} else if (count == states.length) {
+			states = pending[level] = Arrays.copyOf(states, count * 2);
+		}
+		states[count] = child;
+		pendingCounts[level] = count + 1;
+	}
+
+	/** The states read inside a state, as its children, as {@code getChildren().add} would leave them. */
+	private void adopt(Node state, int level) {
+		int count = pendingCounts[level];
+		Object[] states = Arrays.copyOf(pending[level], count);
+		pendingCounts[level] = 0;
+		EList<Node> children = state.getChildren();
+		if (!(children instanceof org.eclipse.emf.common.util.BasicEList<Node> list) || !children.isEmpty()) {
+			for (Object child : states) {
+				add(children, (Node) child);
+			}
+			return;
+		}
+		list.setData(count, states);
+		InternalEObject container = (InternalEObject) state;
+		for (Object child : states) {
+			// what the list's inverse add does: the opposite end, Father_of, set on the child
+			org.eclipse.emf.common.notify.NotificationChain notifications = ((InternalEObject) child).eBasicSetContainer(container,
+					StatechartPackage.NODE__FATHER_OF, null);
+			if (notifications != null) {
+				notifications.dispatch();
+			}
+		}
 	}
 
 	/** A child element of the innermost open element: the kinds of element each kind may contain. */
@@ -324,7 +403,7 @@ final class StctReader {
 				throw notOurs("an element a state does not hold");
 			}
 			Node child = FACTORY.createNode();
-			add(node.getChildren(), child);
+			pend(child);
 			children(child, NODE, "Children");
 		} else if (parent instanceof Model model) {
 			if (name("nodes")) {
@@ -365,8 +444,13 @@ final class StctReader {
 			open = java.util.Arrays.copyOf(open, depth * 2);
 			tags = java.util.Arrays.copyOf(tags, depth * 2);
 		}
+		if (depth == pending.length) {
+			pending = java.util.Arrays.copyOf(pending, depth * 2);
+			pendingCounts = java.util.Arrays.copyOf(pendingCounts, depth * 2);
+		}
 		open[depth] = element;
 		tags[depth] = tag;
+		pendingCounts[depth] = 0;
 		depth++;
 	}
 
@@ -456,10 +540,14 @@ final class StctReader {
 				throw notOurs("an attribute given twice");
 			}
 			seen |= 1 << index;
-			at += names[index].length();
-			skipSpace();
-			expect('=');
-			skipSpace();
+			if (!nameAndEquals) {
+				at += names[index].length();
+				skipSpace();
+				expect('=');
+			}
+			if (at < end && text[at] != '"') {
+				skipSpace();
+			}
 			set(element, kind, index);
 		}
 	}
@@ -476,6 +564,14 @@ final class StctReader {
 		if (index < 0) {
 			return -1;
 		}
+		// as KSE writes it, name="...: the name and the = in one comparison of eight bytes
+		long mask = EQUALS_MASKS[kind][index];
+		if (mask != 0 && at + 8 <= end && ((long) LONGS.get(text, at) & mask) == EQUALS_WORDS[kind][index]) {
+			at += ATTRIBUTE_BYTES[kind][index].length + 1;
+			nameAndEquals = true;
+			return index;
+		}
+		nameAndEquals = false;
 		byte[] name = ATTRIBUTE_BYTES[kind][index];
 		return at + name.length <= end && Arrays.equals(text, at, at + name.length, name, 0, name.length) && attributeNameEnds(at + name.length) ? index : -1;
 	}
@@ -487,7 +583,7 @@ final class StctReader {
 			switch (index) {
 			case 0 -> node.setName(attributeValue());
 			case 1 -> node.setLabel(attributeValue());
-			case 2 -> node.setType(attributeValue());
+			case 2 -> node.setType(kindValue());
 			case 3 -> node.setActivity(attributeValue());
 			default -> reference(node, 2);
 			}
@@ -497,7 +593,7 @@ final class StctReader {
 			switch (index) {
 			case 0 -> transition.setTE(attributeValue());
 			case 1 -> transition.setName(attributeValue());
-			default -> reference(transition, index - 2);
+			default -> transitionEnd(transition, index - 2);
 			}
 		}
 		default -> {
@@ -505,10 +601,107 @@ final class StctReader {
 			if (index == 0) {
 				variable.setName(attributeValue());
 			} else {
-				variable.setType(attributeValue());
+				variable.setType(kindValue());
 			}
 		}
 		}
+	}
+
+	/** The model's states, to resolve a transition's ends as soon as they are read. */
+	private InternalEList<Node> roots;
+
+	/**
+	 * A transition's end: resolved where it is read when it is a plain path to a state already
+	 * read (lists only grow while reading, so the path leads to the same state at the end of the
+	 * file), kept for the end otherwise. One pass over the path's bytes instead of a scan, a copy
+	 * and a second parse.
+	 */
+	private void transitionEnd(Transition transition, int kind) throws NotOurs {
+		int start = at;
+		Node node = stateAt();
+		if (node == null) {
+			at = start;
+			reference(transition, kind);
+		} else if (kind == 0) {
+			transition.setSource(node);
+		} else {
+			transition.setTarget(node);
+		}
+	}
+
+	/**
+	 * The state of the quoted path {@code //@nodes.N(/@Children.M)*} at {@link #at}, stepping over
+	 * it; null, with {@link #at} anywhere, when the value is anything else or leads to no state read
+	 * so far: {@link #reference} then reads it the general way.
+	 */
+	private Node stateAt() {
+		int i = at;
+		if (i + 1 + NODE_PATH.length >= end) {
+			return null;
+		}
+		byte quote = text[i++];
+		if ((quote != '"' && quote != '\'') || (long) LONGS.get(text, i) != NODE_PATH_WORD || text[i + 8] != '.') {
+			return null;
+		}
+		i += NODE_PATH.length;
+		int index = digits(i);
+		if (index < 0 || index >= roots.size()) {
+			return null;
+		}
+		i = digitsEnd;
+		Node node = roots.basicGet(index);
+		while (i < end) {
+			byte c = text[i];
+			if (c == quote) {
+				at = i + 1;
+				return node;
+			}
+			if (i + CHILD_PATH.length >= end || (long) LONGS.get(text, i) != CHILD_PATH_WORD || text[i + 8] != 'e' || text[i + 9] != 'n' || text[i + 10] != '.') {
+				return null;
+			}
+			i += CHILD_PATH.length;
+			index = digits(i);
+			if (index < 0) {
+				return null;
+			}
+			InternalEList<Node> children = (InternalEList<Node>) node.getChildren();
+			if (index >= children.size()) {
+				return null;
+			}
+			i = digitsEnd;
+			node = children.basicGet(index);
+		}
+		return null;
+	}
+
+	private static final long NODE_PATH_WORD = (long) LONGS.get("//@nodes.".getBytes(StandardCharsets.US_ASCII), 0);
+	// "/@Childr", followed by "en."
+	private static final long CHILD_PATH_WORD = (long) LONGS.get("/@Children.".getBytes(StandardCharsets.US_ASCII), 0);
+
+	/** Where the digits {@link #digits} last read end. */
+	private int digitsEnd;
+
+	/**
+	 * The index written at {@code i} as KSE writes it (1 to 9 decimal digits, no leading zero),
+	 * or -1; {@link #digitsEnd} is set to where it ends.
+	 */
+	private int digits(int i) {
+		int start = i;
+		int value = 0;
+		while (i < end && i - start < 10) {
+			int digit = text[i] - '0';
+			if (digit < 0 || digit > 9) {
+				break;
+			}
+			value = value * 10 + digit;
+			i++;
+		}
+		int length = i - start;
+		if (length < 1 || length > 9 || (length > 1 && text[start] == '0')) {
+			return -1;
+		}
+		digitsEnd = i;
+		return value;
 	}
 
 	/**
@@ -598,8 +791,56 @@ final class StctReader {
 
 	/** The text of the value {@link #scanValue()} found. */
 	private String valueText() throws NotOurs {
+		if (valuePlain && valueAscii) {
+			return asciiText();
+		}
 		String raw = valueAscii ? new String(text, valueStart, valueStop - valueStart, StandardCharsets.ISO_8859_1) : utf8(valueStart, valueStop);
 		return valuePlain ? raw : references(raw, valueStart);
+	}
+
+	/**
+	 * A plain ASCII value as text; the same text as the value before it is the same string. A
+	 * state's name and label are often the same ({@code name="0.2.1" label="0.2.1"}): one string
+	 * fewer to make and to keep. Strings cannot change, so sharing one is not seen.
+	 */
+	private String asciiText() {
+		int length = valueStop - valueStart;
+		if (length == lastValueStop - lastValueStart && Arrays.equals(text, valueStart, valueStop, text, lastValueStart, lastValueStop)) {
+			return lastValue;
+		}
+		lastValue = new String(text, valueStart, length, StandardCharsets.ISO_8859_1);
+		lastValueStart = valueStart;
+		lastValueStop = valueStop;
+		return lastValue;
+	}
+
+	/** The plain ASCII value last made into a string, and where it is. */
+	private String lastValue;
+	private int lastValueStart;
+	private int lastValueStop = -1;
+
+	/** The kinds ({@code type}) read so far, as the strings made for them: a model has a handful, each on thousands of states. */
+	private String[] kinds = new String[8];
+	private int kindCount;
+
+	/** A state's or a variable's type: one string for each kind in the file, where it is plain ASCII. */
+	private String kindValue() throws NotOurs {
+		scanValue();
+		if (!valuePlain || !valueAscii) {
+			return valueText();
+		}
+		int length = valueStop - valueStart;
+		for (int i = 0; i < kindCount; i++) {
+			String kind = kinds[i];
+			if (kind.length() == length && startsWith(text, valueStart, kind)) {
+				return kind;
+			}
+		}
+		String kind = new String(text, valueStart, length, StandardCharsets.ISO_8859_1);
+		if (kindCount < kinds.length) {
+			kinds[kindCount++] = kind;
+		}
+		return kind;
 	}
 
 	/** Finds the quoted value at {@link #at} and steps over it. */
@@ -621,6 +862,8 @@ final class StctReader {
 				long angles = word ^ ANGLES;
 				long special = ((quoted - ONES) & ~quoted) | ((ampersands - ONES) & ~ampersands) | ((angles - ONES) & ~angles) | ((word - SPACES) & ~word) | word;
 				if ((special & HIGHS) != 0) {
+					// the lowest byte marked is the first special one (a borrow only runs upwards)
+					at += Long.numberOfTrailingZeros(special & HIGHS) >>> 3;
 					break;
 				}
 				at += 8;

@@ -40,6 +40,15 @@ final class StctWriter {
 	private static final byte[] NODE_PATH = ascii("//@nodes.");
 	private static final byte[] CHILD_PATH = ascii("/@Children.");
 	private static final byte[] HEX = ascii("0123456789abcdef");
+	/** Each attribute's {@code  name="}, written with one copy. */
+	private static final byte[] NAME = opening("name");
+	private static final byte[] LABEL = opening("label");
+	private static final byte[] TYPE = opening("type");
+	private static final byte[] ACTIVITY = opening("activity");
+	private static final byte[] TE = opening("TE");
+	private static final byte[] SOURCE = opening("source");
+	private static final byte[] TARGET = opening("target");
+	private static final byte[] STATE_VARIABLES = opening("variables");
 
 	private final byte[] lineSeparator;
 	/**
@@ -53,16 +62,17 @@ final class StctWriter {
 	private byte[] out = SpareBuffers.chunk(spare);
 	private int size;
 
-	/** Each state's positional path, as written for a transition's end; each variable's. */
-	private final StatePaths statePaths;
+	/** Each state's positional path, made when {@link #lastPath} does not find a transition's end; each variable's. */
+	private StatePaths statePaths;
+	/** The path of the state last written as a transition's end, and of each state above it. */
+	private final LastPath lastPath = new LastPath();
 	private final Map<Variable, byte[]> variablePaths = new IdentityHashMap<>();
 	private final Model model;
 
 	private StctWriter(Model model, String lineSeparator) {
-		this.model = model;
 		this.lineSeparator = ascii(lineSeparator);
-		// a statechart has about as many states as transitions: sized so that it seldom grows
-		this.statePaths = new StatePaths(model.getTransitions().size() + 16);
+		this.scanBudget = 16L * (model.getTransitions().size() + 64);
+		this.model = model;
 	}
 
 	/**
@@ -104,7 +114,7 @@ final class StctWriter {
 		append(HEADER);
 		line();
 		append(ROOT);
-		attribute("name", model.getName());
+		attribute(NAME, model.getName());
 		if (nodes.isEmpty() && transitions.isEmpty() && variables.isEmpty()) {
 			append('/');
 			append('>');
@@ -122,10 +132,10 @@ final class StctWriter {
 			indent(1);
 			append('<');
 			append(TRANSITIONS);
-			attribute("TE", transition.getTE());
-			attribute("name", transition.getName());
-			end("source", transition.eGet(StatechartPackage.Literals.TRANSITION__SOURCE, false));
-			end("target", transition.eGet(StatechartPackage.Literals.TRANSITION__TARGET, false));
+			attribute(TE, transition.getTE());
+			attribute(NAME, transition.getName());
+			end(SOURCE, transition.eGet(StatechartPackage.Literals.TRANSITION__SOURCE, false));
+			end(TARGET, transition.eGet(StatechartPackage.Literals.TRANSITION__TARGET, false));
 			append('/');
 			append('>');
 			line();
@@ -135,8 +145,8 @@ final class StctWriter {
 			indent(1);
 			append('<');
 			append(VARIABLES);
-			attribute("name", variable.getName());
-			attribute("type", variable.getType());
+			attribute(NAME, variable.getName());
+			attribute(TYPE, variable.getType());
 			append('/');
 			append('>');
 			line();
@@ -148,13 +158,10 @@ final class StctWriter {
 	/** A top-level state and everything in it, without recursion: states nest as deep as a formula does. */
 	private void tree(Node top, int index) throws NotOurs {
 		Node[] open = new Node[16];
-		long[] paths = new long[16];
 		int[] next = new int[16];
 		int depth = 0;
-		long topPath = statePaths.add(top, 0L, NODE_PATH, index);
 		if (start(top, 1)) {
 			open[0] = top;
-			paths[0] = topPath;
 			depth = 1;
 		}
 		while (depth > 0) {
@@ -164,15 +171,12 @@ final class StctWriter {
 			if (child < children.size()) {
 				next[depth - 1] = child + 1;
 				Node state = children.basicGet(child);
-				long path = statePaths.add(state, paths[depth - 1], CHILD_PATH, child);
 				if (start(state, depth + 1)) {
 					if (depth == open.length) {
 						open = Arrays.copyOf(open, depth * 2);
-						paths = Arrays.copyOf(paths, depth * 2);
 						next = Arrays.copyOf(next, depth * 2);
 					}
 					open[depth] = state;
-					paths[depth] = path;
 					next[depth] = 0;
 					depth++;
 				}
@@ -209,6 +213,187 @@ final class StctWriter {
 	}
 
 	/**
+	 * The table of every state's path, made the first time a transition's end is not found by
+	 * {@link LastPath} (a model whose transitions jump about its large lists).
+	 */
+	private StatePaths statePaths() {
+		if (statePaths == null) {
+			// a statechart has about as many states as transitions: sized so that it seldom grows
+			statePaths = new StatePaths(model.getTransitions().size() + 16);
+			InternalEList<Node> nodes = (InternalEList<Node>) model.getNodes();
+			Node[] open = new Node[16];
+			long[] paths = new long[16];
+			int[] next = new int[16];
+			for (int i = 0; i < nodes.size(); i++) {
+				open[0] = nodes.basicGet(i);
+				paths[0] = statePaths.add(open[0], 0L, NODE_PATH, i);
+				next[0] = 0;
+				int depth = 1;
+				while (depth > 0) {
+					InternalEList<Node> children = (InternalEList<Node>) open[depth - 1].getChildren();
+					int child = next[depth - 1]++;
+					if (child < children.size()) {
+						if (depth == open.length) {
+							open = Arrays.copyOf(open, depth * 2);
+							paths = Arrays.copyOf(paths, depth * 2);
+							next = Arrays.copyOf(next, depth * 2);
+						}
+						open[depth] = children.basicGet(child);
+						paths[depth] = statePaths.add(open[depth], paths[depth - 1], CHILD_PATH, child);
+						next[depth] = 0;
+						depth++;
+					} else {
+						depth--;
+					}
+				}
+			}
+		}
+		return statePaths;
+	}
+
+	/**
+	 * A transition's end found from where it is: the states above it (through their containers)
+	 * and its place in its container's list, looked for near where the last end was. Transitions
+	 * mostly come in the order of their states and join neighbours, so the states above are those
+	 * of the last end and the place is a few steps from its place: no table to reach, no identity
+	 * hash. An end that is not near (in a large list) is left to the table, {@link #statePaths()}.
+	 */
+	private final class LastPath {
+		/** The last end's path, and for each level (0: a state of the model) its state, its index in its list and where its path ends. */
+		private byte[] path = new byte[256];
+		private Object[] states = new Object[16];
+		private int[] indexes = new int[16];
+		private int[] ends = new int[16];
+		private int levels;
+		/** The states from an end up to the model, the model's state first. */
+		private Object[] above = new Object[16];
+
+		/** Writes the path of a state of the model; false when it is not found this way. */
+		boolean write(Object state) {
+			if (levels > 0 && state == states[levels - 1]) {
+				append(path, 0, ends[levels - 1]);
+				return true;
+			}
+			// the states above, up to one of the model
+			int depth = 0;
+			Object current = state;
+			while (true) {
+				if (!(current instanceof InternalEObject element)) {
+					return false;
+				}
+				if (depth == above.length) {
+					above = Arrays.copyOf(above, depth * 2);
+				}
+				above[depth++] = current;
+				Object container = element.eInternalContainer();
+				if (container == model) {
+					break;
+				}
+				if (!(container instanceof Node)) {
+					return false;
+				}
+				current = container;
+			}
+			// the deepest level the last path shares; the levels under it found in their lists
+			int common = Math.min(depth, levels) - 1;
+			while (common >= 0 && above[depth - 1 - common] != states[common]) {
+				common--;
+			}
+			if (depth > states.length) {
+				states = Arrays.copyOf(states, Math.max(depth, states.length * 2));
+				indexes = Arrays.copyOf(indexes, states.length);
+				ends = Arrays.copyOf(ends, states.length);
+			}
+			int length = common < 0 ? 0 : ends[common];
+			for (int level = common + 1; level < depth; level++) {
+				Object element = above[depth - 1 - level];
+				java.util.List<?> list = level == 0 ? model.getNodes() : ((Node) above[depth - level]).getChildren();
+				int index = indexNear(list, element, level < levels ? indexes[level] : 0);
+				if (index < 0) {
+					// the levels from here on are not known: the last path ends above them
+					levels = level;
+					return false;
+				}
+				length = segment(length, level == 0 ? NODE_PATH : CHILD_PATH, index);
+				states[level] = element;
+				indexes[level] = index;
+				ends[level] = length;
+			}
+			levels = depth;
+			append(path, 0, length);
+			return true;
+		}
+
+		/** Writes {@code segment + index} into the path at {@code length}; returns the new length. */
+		private int segment(int length, byte[] segment, int index) {
+			int digits = 1;
+			for (int rest = index / 10; rest > 0; rest /= 10) {
+				digits++;
+			}
+			int newLength = length + segment.length + digits;
+			if (newLength > path.length) {
+				path = Arrays.copyOf(path, Math.max(newLength, path.length * 2));
+			}
+			System.arraycopy(segment, 0, path, length, segment.length);
+			for (int i = newLength - 1, rest = index; i >= newLength - digits; i--, rest /= 10) {
+				path[i] = (byte) ('0' + rest % 10);
+			}
+			return newLength;
+		}
+	}
+
+	/**
+	 * How many elements of lists longer than 256 may yet be compared beyond the windows of
+	 * {@link #indexNear}: 16 per transition, so that a model whose transitions jump about a long
+	 * list costs little more than the table would.
+	 */
+	private long scanBudget;
+
+	/**
+	 * Where an element is in a list, looked for from {@code hint} on and a little before it: the
+	 * whole of a short list, a window of a long one, then the whole of it (of a list longer than
+	 * 256 only while {@link #scanBudget} lasts), so that no model makes this quadratic; -1 when it
+	 * is not found.
+	 */
+	private int indexNear(java.util.List<?> list, Object element, int hint) {
+		if (!(list instanceof org.eclipse.emf.common.util.BasicEList<?> basic)) {
+			return -1;
+		}
+		Object[] data = basic.data();
+		int size = basic.size();
+		int from;
+		int to;
+		if (size <= 64) {
+			from = 0;
+			to = size;
+		} else {
+			from = Math.max(0, Math.min(hint, size) - 16);
+			to = Math.min(size, from + 64);
+		}
+		int start = Math.min(Math.max(hint, from), to);
+		for (int i = start; i < to; i++) {
+			if (data[i] == element) {
+				return i;
+			}
+		}
+		for (int i = from; i < start; i++) {
+			if (data[i] == element) {
+				return i;
+			}
+		}
+		// a choice's transitions go from its first state to each of a hundred others and back
+		if (to - from < size && (size <= 256 || scanBudget >= size)) {
+			scanBudget -= size > 256 ? size : 0;
+			for (int i = 0; i < size; i++) {
+				if (data[i] == element) {
+					return i;
+				}
+			}
+		}
+		return -1;
+	}
+
+	/**
 	 * Each state's positional path, found by the state's identity: an open-addressing table of
 	 * states and, for each, where its path lies in one array of all paths, which are kept in
 	 * document order. A transition's ends are mostly states written near each other, so their
@@ -216,8 +401,8 @@ final class StctWriter {
 	 */
 	private static final class StatePaths {
 		private Node[] states;
-		private int[] starts;
-		private int[] lengths;
+		/** For each slot of {@link #states}, where its path is: {@code start << 32 | length}, one array to reach instead of two. */
+		private long[] places;
 		private int count;
 		private byte[] bytes;
 		private int size;
@@ -227,8 +412,7 @@ final class StctWriter {
 			bytes = new byte[Math.max(1 << 12, expected * 56)];
 			int capacity = Integer.highestOneBit(Math.max(16, expected * 2) - 1) << 1;
 			states = new Node[capacity];
-			starts = new int[capacity];
-			lengths = new int[capacity];
+			places = new long[capacity];
 		}
 
 		/**
@@ -256,12 +440,12 @@ final class StctWriter {
 				bytes[i] = (byte) ('0' + rest % 10);
 			}
 			size += length;
+			long place = (long) start << 32 | length;
 			int slot = slot(state);
 			states[slot] = state;
-			starts[slot] = start;
-			lengths[slot] = length;
+			places[slot] = place;
 			count++;
-			return (long) start << 32 | length;
+			return place;
 		}
 
 		/** The slot of a state, or of the empty place where it would go. */
@@ -280,23 +464,21 @@ final class StctWriter {
 			if (states[slot] == null) {
 				return false;
 			}
-			writer.append(bytes, starts[slot], lengths[slot]);
+			long place = places[slot];
+			writer.append(bytes, (int) (place >>> 32), (int) place);
 			return true;
 		}
 
 		private void grow() {
 			Node[] oldStates = states;
-			int[] oldStarts = starts;
-			int[] oldLengths = lengths;
+			long[] oldPlaces = places;
 			states = new Node[oldStates.length * 2];
-			starts = new int[states.length];
-			lengths = new int[states.length];
+			places = new long[states.length];
 			for (int i = 0; i < oldStates.length; i++) {
 				if (oldStates[i] != null) {
 					int slot = slot(oldStates[i]);
 					states[slot] = oldStates[i];
-					starts[slot] = oldStarts[i];
-					lengths[slot] = oldLengths[i];
+					places[slot] = oldPlaces[i];
 				}
 			}
 		}
@@ -308,16 +490,13 @@ final class StctWriter {
 		indent(level);
 		append('<');
 		append(level == 1 ? NODES : CHILDREN);
-		attribute("name", node.getName());
-		attribute("label", node.getLabel());
-		attribute("type", node.getType());
-		attribute("activity", node.getActivity());
+		attribute(NAME, node.getName());
+		attribute(LABEL, node.getLabel());
+		attribute(TYPE, node.getType());
+		attribute(ACTIVITY, node.getActivity());
 		InternalEList<Variable> variables = (InternalEList<Variable>) node.getVariables();
 		if (!variables.isEmpty()) {
-			append(' ');
-			append(VARIABLES);
-			append('=');
-			append('"');
+			append(STATE_VARIABLES);
 			for (int i = 0; i < variables.size(); i++) {
 				byte[] path = variablePaths.get(variables.basicGet(i));
 				if (path == null) {
@@ -349,20 +528,12 @@ final class StctWriter {
 	}
 
 	/** A transition's end as the path of its state in this model, or nothing when it has none. */
-	private void end(String name, Object value) throws NotOurs {
+	private void end(byte[] opening, Object value) throws NotOurs {
 		if (value == null) {
 			return;
 		}
-		if (!(value instanceof Node node) || ((InternalEObject) node).eIsProxy()) {
-			throw new NotOurs("a transition end that is not a state of the model");
-		}
-		append(' ');
-		for (int i = 0; i < name.length(); i++) {
-			append((byte) name.charAt(i));
-		}
-		append('=');
-		append('"');
-		if (!statePaths.write(node, this)) {
+		append(opening);
+		if (!lastPath.write(value) && !statePaths().write(value, this)) {
 			throw new NotOurs("a transition end that is not a state of the model");
 		}
 		append('"');
@@ -370,16 +541,11 @@ final class StctWriter {
 
 	/** {@code name="value"} with EMF's escapes, or nothing for a value that is not set. */
 	@SuppressWarnings("deprecation") // String.getBytes(int, int, byte[], int): the fastest copy of ASCII text
-	private void attribute(String name, String value) throws NotOurs {
+	private void attribute(byte[] opening, String value) throws NotOurs {
 		if (value == null) {
 			return;
 		}
-		append(' ');
-		for (int i = 0; i < name.length(); i++) {
-			append((byte) name.charAt(i));
-		}
-		append('=');
-		append('"');
+		append(opening);
 		int length = value.length();
 		if (plain(value)) {
 			// nothing to escape: the characters are their bytes
@@ -487,6 +653,10 @@ final class StctWriter {
 			out = more <= SpareBuffers.CHUNK ? SpareBuffers.chunk(spare) : new byte[more];
 			size = 0;
 		}
+	}
+
+	private static byte[] opening(String attribute) {
+		return ascii(" " + attribute + "=\"");
 	}
 
 	private static byte[] ascii(String text) {

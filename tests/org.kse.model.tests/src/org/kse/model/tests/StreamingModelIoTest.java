@@ -353,6 +353,161 @@ class StreamingModelIoTest {
 		assertTrue(written.startsWith("<?xml version=\"1.0\" encoding=\"UTF-8\"?>"), written);
 	}
 
+	/**
+	 * The writer finds a transition's end from the states above it and its place near the last
+	 * end's (ADR 0026), the whole of a list when it is not near, and an identity table once long
+	 * lists have been searched enough: transitions that jump about lists of 100, 300 and 3,000
+	 * states, and about a chain 60 deep, are written as EMF writes them; an end that is a state of
+	 * another model is still declined after the table is made.
+	 */
+	@Test
+	void transitionsThatJumpAboutLongListsAreWrittenAsEmfDoes() throws IOException {
+		StatechartFactory factory = StatechartFactory.eINSTANCE;
+		Random random = new Random(SEED);
+		Model model = factory.createModel();
+		model.setName("Jumps");
+		List<Node> states = new ArrayList<>();
+		for (int size : new int[] { 100, 300, 3_000 }) {
+			Node parent = factory.createNode();
+			parent.setName("list of " + size);
+			model.getNodes().add(parent);
+			for (int i = 0; i < size; i++) {
+				Node state = factory.createNode();
+				state.setName(size + "." + i);
+				parent.getChildren().add(state);
+				states.add(state);
+			}
+		}
+		Node parent = model.getNodes().get(0);
+		for (int level = 0; level < 60; level++) {
+			Node child = factory.createNode();
+			child.setLabel("level " + level);
+			parent.getChildren().add(random.nextInt(parent.getChildren().size() + 1), child);
+			states.add(child);
+			parent = child;
+		}
+		// neighbours first (the windows), then jumps (whole lists, then the table)
+		for (int i = 0; i + 1 < states.size(); i++) {
+			Transition transition = factory.createTransition();
+			transition.setSource(states.get(i));
+			transition.setTarget(states.get(i + 1));
+			model.getTransitions().add(transition);
+		}
+		for (int i = 0; i < 20_000; i++) {
+			Transition transition = factory.createTransition();
+			transition.setSource(states.get(random.nextInt(states.size())));
+			transition.setTarget(states.get(random.nextInt(states.size())));
+			model.getTransitions().add(transition);
+		}
+		byte[] emf = StatechartResources.toBytes(EcoreUtil.copy(model), false);
+		Model copy = EcoreUtil.copy(model);
+		byte[] ours = StatechartResources.toBytes(copy);
+		StatechartResources.attach(copy, directory.resolve("jumps.stct"));
+		assertArrayEquals(emf, StatechartResources.toBytes(copy), "the streaming writer writes other bytes than EMF");
+		assertTrue(StatechartResources.streamed(copy.eResource()), () -> StatechartResources.fallbackReason(copy.eResource()));
+		assertArrayEquals(emf, ours, "the streaming writer writes other bytes than EMF (scratch resource)");
+
+		Path file = directory.resolve("jumps-read.stct");
+		Files.write(file, emf);
+		Model read = StatechartResources.load(file);
+		assertTrue(StatechartResources.streamed(read.eResource()), () -> StatechartResources.fallbackReason(read.eResource()));
+		assertSameModel(StatechartResources.load(file, false), read, "jumps");
+
+		// a state of another model, after 20,000 jumps have made the writer use its table
+		Transition stray = factory.createTransition();
+		stray.setSource(states.get(0));
+		stray.setTarget(factory.createNode());
+		model.getTransitions().add(stray);
+		StatechartResources.attach(model, directory.resolve("stray.stct"));
+		Map<Object, Object> options = Map.of(XMLResource.OPTION_ENCODING, "ASCII", XMLResource.OPTION_SAVE_TYPE_INFORMATION, Boolean.FALSE,
+				XMLResource.OPTION_SKIP_ESCAPE_URI, Boolean.FALSE);
+		String written = save(model, options);
+		assertFalse(StatechartResources.streamed(model.eResource()), "a transition to a state of no model is EMF's to write");
+		Map<Object, Object> emfOnly = new java.util.HashMap<>(options);
+		emfOnly.put(StatechartResources.OPTION_STREAMING, Boolean.FALSE);
+		assertEquals(save(model, emfOnly), written);
+	}
+
+	/**
+	 * The reader resolves a transition's end where it reads it when the state is already read, and
+	 * at the end of the file otherwise: transitions before the states, between them, and to states
+	 * of a later {@code <nodes>} give EMF's model.
+	 */
+	@Test
+	void transitionsBeforeTheirStatesAreReadAsEmfDoes() throws IOException {
+		String first = "  <nodes name=\"a\" type=\"OR\">\n    <Children name=\"a1\"/>\n    <Children name=\"a2\" type=\"OR\">\n      <Children name=\"a21\"/>\n    </Children>\n  </nodes>\n";
+		String second = "  <nodes name=\"b\">\n    <Children name=\"b1\" label=\"b1\"/>\n  </nodes>\n";
+		String early = "  <transitions name=\"early\" source=\"//@nodes.1/@Children.0\" target=\"//@nodes.0/@Children.1/@Children.0\"/>\n";
+		String between = "  <transitions name=\"between\" source=\"//@nodes.0/@Children.1/@Children.0\" target=\"//@nodes.1/@Children.0\"/>\n";
+		String late = "  <transitions name=\"late\" source=\"//@nodes.1\" target='//@nodes.0/@Children.0'/>\n";
+		String end = "</statechart:Model>\n";
+		List<String> files = List.of(HEADER + ROOT + ">\n" + early + first + second + late + end, HEADER + ROOT + ">\n" + first + between + second + late + end,
+				HEADER + ROOT + ">\n" + first + early.replace("//@nodes.1/@Children.0", "//@nodes.0/@Children.2") + second + end);
+		int i = 0;
+		for (String text : files) {
+			Path file = directory.resolve("order" + i++ + ".stct");
+			Files.writeString(file, text, StandardCharsets.US_ASCII);
+			Outcome ours = Outcome.of(file, true);
+			Outcome emf = Outcome.of(file, false);
+			assertEquals(emf.message, ours.message, text);
+			if (i < 3) {
+				assertTrue(StatechartResources.streamed(ours.model.eResource()), () -> StatechartResources.fallbackReason(ours.model.eResource()));
+				assertSameModel(emf.model, ours.model, text);
+			} else {
+				assertTrue(ours.message != null && ours.model == null, "a path to no state is refused: " + text);
+			}
+		}
+	}
+
+	/**
+	 * The reader gives each state its children in one step (ADR 0026): the lists and containers
+	 * it leaves behave as those of EMF's reader when the model is then edited.
+	 */
+	@Test
+	void aModelReadIsEditedAsEmfsIs() throws IOException {
+		Path file = REPOSITORY.resolve("tests/data/legacy-kse/Goalie/Goalie.stct");
+		List<Model> models = new ArrayList<>();
+		List<List<String>> observed = new ArrayList<>();
+		for (boolean streaming : new boolean[] { true, false }) {
+			Model model = StatechartResources.load(file, streaming);
+			assertEquals(streaming, StatechartResources.streamed(model.eResource()));
+			Node top = model.getNodes().get(0);
+			Node composite = null;
+			for (Iterator<EObject> it = model.eAllContents(); it.hasNext() && composite == null;) {
+				if (it.next() instanceof Node state && state != top && state.getChildren().size() > 1) {
+					composite = state;
+				}
+			}
+			assertNotNull(composite, "the Goalie has a composite state inside its top state");
+			List<String> heard = new ArrayList<>();
+			composite.eAdapters().add(new org.eclipse.emf.ecore.util.EContentAdapter() {
+				@Override
+				public void notifyChanged(org.eclipse.emf.common.notify.Notification notification) {
+					super.notifyChanged(notification);
+					heard.add(notification.getEventType() + " " + notification.getPosition());
+				}
+			});
+			Node added = StatechartFactory.eINSTANCE.createNode();
+			added.setName("added");
+			composite.getChildren().add(0, added);
+			Node moved = composite.getChildren().get(composite.getChildren().size() - 1);
+			top.getChildren().add(moved);
+			composite.getChildren().move(0, 1);
+			composite.getChildren().get(0).setName("renamed");
+			assertEquals(composite, added.getFather_of(), "the container of a state added to a state read");
+			assertEquals(top, moved.getFather_of(), "the container of a state moved out of a state read");
+			for (Iterator<EObject> it = model.eAllContents(); it.hasNext();) {
+				EObject element = it.next();
+				heard.add(element.eContainingFeature().getName() + " " + ((InternalEObject) element).eContainerFeatureID());
+			}
+			heard.add(new String(StatechartResources.toBytes(model), StandardCharsets.US_ASCII));
+			models.add(model);
+			observed.add(heard);
+		}
+		assertSameModel(models.get(1), models.get(0), "edited");
+		assertEquals(observed.get(1), observed.get(0), "notifications, containing features and bytes after the same edits");
+	}
+
 	/** The names of the states of a chain, and where the chain branches or ends. */
 	private static List<String> chain(Model model) {
 		List<String> chain = new ArrayList<>();
