@@ -6,6 +6,8 @@
 # Usage: bench/workbench-start.sh [runs, default 3]
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
+# shellcheck source=../releng/stop-process.sh
+. "$here/releng/stop-process.sh"
 runs="${1:-3}"
 products="$here/releng/org.kse.product/target/products"
 out="$here/target/bench/workbench-start"
@@ -40,7 +42,7 @@ start() {
     kill -0 $pid 2>/dev/null || { cat "$out/$1.log" >&2; echo "workbench-start: $1 exited" >&2; exit 1; }
     sleep 0.02
   done
-  kill $pid; wait $pid 2>/dev/null || true
+  stop_process $pid
   pid=""
   sleep 1 # the disk settles after the workbench's exit
 }

@@ -7,6 +7,8 @@
 # Usage: tests/product/install-into-eclipse.sh <output-folder>
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
+# shellcheck source=../../releng/stop-process.sh
+. "$here/releng/stop-process.sh"
 out="$(mkdir -p "$1" && cd "$1" && pwd)"
 site="$here/releng/org.kse.updatesite/target/repository"
 platform_archive=$(ls "$here"/releng/org.kse.product/target/products/eclipse-platform-*-linux.gtk.x86_64.tar.gz)
@@ -64,7 +66,7 @@ done
 sleep 3
 DISPLAY="$display" import -window root "$out/eclipse.png"
 echo "   window $title; screenshot $out/eclipse.png"
-kill $eclipse; wait $eclipse 2>/dev/null || true
+stop_process $eclipse
 eclipse=""
 [ -f "$out/workspace/Goalie/.project" ] || [ -f "$out/models/.project" ] || fail "the statechart's folder did not become a project"
 if [ -s "$out/workspace/.metadata/.log" ]; then

@@ -6,6 +6,8 @@
 # Usage: tests/product/smoke.sh <output-folder>
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
+# shellcheck source=../../releng/stop-process.sh
+. "$here/releng/stop-process.sh"
 out="$(mkdir -p "$1" && cd "$1" && pwd)"
 products="$here/releng/org.kse.product/target/products"
 linux=$(ls "$products"/kse-workbench-*-linux.gtk.x86_64.tar.gz)
@@ -72,11 +74,11 @@ if [ -s "$out/workspace/.metadata/.log" ]; then
 fi
 echo "   .metadata/.log clean after the start"
 DISPLAY="$display" xwininfo -root -tree | grep -o '"[^"]* - KSE[^"]*"' | head -1
-kill $workbench; wait $workbench 2>/dev/null || true
+stop_process $workbench
 start_workbench warm
 warm=$elapsed
 echo "   window after ${warm} ms (warm start)"
-kill $workbench; wait $workbench 2>/dev/null || true
+stop_process $workbench
 workbench=""
 
 echo "-- the headless CLI inside the workbench product"
