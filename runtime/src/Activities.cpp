@@ -39,6 +39,7 @@ void EngineCore::Launch(BasicState* state) {
       // Not among running_activities_: nothing runs, nothing is to be waited for.
       state->region_->running_.fetch_add(1, std::memory_order_acq_rel);
       inline_runs_.push_back(state);
+      run_begins_work_.store(true, std::memory_order_release);
     }
     return;
   }
@@ -128,8 +129,12 @@ bool EngineCore::TakeWake() {
 }
 
 void EngineCore::BeginRun() {
+  // Nothing to end (set under the lock with what there is): one that a step on another thread
+  // makes meanwhile is ended at the next run, as if that step had come after this look.
+  if (!run_begins_work_.load(std::memory_order_acquire)) return;
   {
     std::lock_guard<EngineLock> lock(engine_lock_);
+    run_begins_work_.store(false, std::memory_order_relaxed);
     if (!unsettled_loop_.empty()) unsettled_loop_.clear();
     if (inline_runs_.empty()) return;
     for (BasicState* state : inline_runs_) {
@@ -157,6 +162,7 @@ bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) 
     if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
       fired_record_ = nullptr;
       unsettled_loop_ = DescribeLoop(loop_record_);
+      if (!unsettled_loop_.empty()) run_begins_work_.store(true, std::memory_order_release);
       Report(EngineReport::Kind::Warning,
              "RunUntilStable stopped after " + std::to_string(max_transitions) +
                  " transitions: the statechart does not settle" +

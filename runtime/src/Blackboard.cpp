@@ -221,10 +221,17 @@ bool Blackboard::IsSubscribed(const std::string& topic) const {
          std::find(contents_->topics.begin(), contents_->topics.end(), topic) != contents_->topics.end();
 }
 
-void Blackboard::Deliver(const std::string& topic, const std::string& type_name, Kind kind,
-                         const MessagePtr& message, TimePoint time) {
+Blackboard::Slot* Blackboard::Deliver(const std::string& topic, const std::string& type_name, Kind kind,
+                                      const MessagePtr& message, TimePoint time) {
   std::lock_guard<SpinLock> lock(mutex_);
-  Queue(SlotFor(topic, type_name), kind, message, time);
+  Slot& slot = SlotFor(topic, type_name);
+  Queue(slot, kind, message, time);
+  return &slot;
+}
+
+void Blackboard::DeliverAt(Slot* slot, Kind kind, const MessagePtr& message, TimePoint time) {
+  std::lock_guard<SpinLock> lock(mutex_);
+  Queue(*slot, kind, message, time);
 }
 
 void Blackboard::Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
@@ -255,6 +262,7 @@ void Blackboard::Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoi
     slot.pending = true;
     c.pending.push_back(&slot);
   }
+  inbox_size_.store(c.inbox_size, std::memory_order_release);
 }
 
 void Blackboard::Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
@@ -278,6 +286,10 @@ void Blackboard::Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoi
 }
 
 void Blackboard::ProcessMessages() {
+  // An empty inbox (every guard of a step after the first refreshes the same blackboard) is
+  // told without the lock. A message delivered meanwhile by another thread is made visible at
+  // the next call, as if it had come just after this one.
+  if (inbox_size_.load(std::memory_order_acquire) == 0) return;
   std::lock_guard<SpinLock> lock(mutex_);
   if (!contents_ || contents_->inbox_size == 0) {
     return;
@@ -301,11 +313,12 @@ void Blackboard::ProcessMessages() {
   }
   c.pending.clear();
   c.inbox_size = 0;
+  inbox_size_.store(0, std::memory_order_release);
 }
 
 std::size_t Blackboard::PendingMessages() const {
-  std::lock_guard<SpinLock> lock(mutex_);
-  return contents_ ? contents_->inbox_size : 0;
+  // Written under the lock at every change of the inbox: the count as of the last one.
+  return inbox_size_.load(std::memory_order_acquire);
 }
 
 void Blackboard::ReadStateTo(const std::string& topic, const std::string& type_name, Sink sink,
@@ -415,7 +428,12 @@ void Blackboard::PublishMessage(const std::string& topic, Kind kind, MessagePtr 
   if (!message) {
     return;
   }
-  const std::string& type_name = message->GetDescriptor()->full_name();
+  const std::string& type_name = message->GetDescriptor()->full_name();  // before the move
+  PublishNamed(topic, type_name, kind, std::move(message));
+}
+
+void Blackboard::PublishNamed(const std::string& topic, const std::string& type_name, Kind kind,
+                              MessagePtr message) {
   const TimePoint now = Now();
   {
     std::lock_guard<SpinLock> lock(mutex_);

@@ -177,6 +177,10 @@ class EngineCore {
   Statechart::Observer observer_;
   std::atomic<bool> activated_{false};
   std::vector<BasicState*> inline_runs_;  // inline activities that end at the next run
+  // Whether BeginRun() has anything to do (inline_runs_ or unsettled_loop_ not empty): set
+  // under engine_lock_, read without it, so that the cycles with nothing to end (most of a
+  // robot's) take no lock for it.
+  std::atomic<bool> run_begins_work_{false};
   // Near a RunUntilStable() bound: every segment fired (into loop_record_). Null otherwise
   // (one test per Fire()).
   std::vector<const TransitionSegmentBase*>* fired_record_ = nullptr;

@@ -1,8 +1,11 @@
 #include "statechart_engine/Interfaces.h"
 
+#include <atomic>
 #include <charconv>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <system_error>
 #include <utility>
 
@@ -23,6 +26,34 @@ std::int64_t Microseconds(kse::messaging::TimePoint time) {
   return std::chrono::duration_cast<std::chrono::microseconds>(time.time_since_epoch()).count();
 }
 
+// The TimeoutMsg messages this thread set timers with, used again once nobody else holds one:
+// a timer is set on most steps, and the message it replaces is let go at that very publish (by
+// the blackboard and the hub), to be freed as the next one is made. The oldest of a few is
+// looked at, so that each robot of a simulation, all on one thread, finds its own last one gone.
+class TimeoutMessages {
+ public:
+  std::shared_ptr<TimeoutMsg> Next() {
+    std::shared_ptr<TimeoutMsg>& oldest = ring_[next_];
+    next_ = (next_ + 1) % kKept;
+#ifndef __SANITIZE_THREAD__
+    // use_count() is a relaxed load: the fence orders what the last other owner did with the
+    // message before it let go (a release, in the count) before our writes. ThreadSanitizer
+    // does not see fences, so a build with it makes every message anew.
+    if (oldest && oldest.use_count() == 1) {
+      std::atomic_thread_fence(std::memory_order_acquire);
+      return oldest;  // only its wake-up time is ever set, and it is set again
+    }
+#endif
+    oldest = std::make_shared<TimeoutMsg>();  // ours dropped: one still held stays with its holder
+    return oldest;
+  }
+
+ private:
+  static constexpr std::size_t kKept = 32;
+  std::shared_ptr<TimeoutMsg> ring_[kKept];
+  std::size_t next_ = 0;
+};
+
 }  // namespace
 
 void InitTimeout(Blackboard& blackboard, const std::string& topic) {
@@ -32,9 +63,12 @@ void InitTimeout(Blackboard& blackboard, const std::string& topic) {
 void SetTimeout(Blackboard& blackboard, const std::string& topic, std::chrono::milliseconds after) {
   const kse::messaging::TimePoint wakeup = blackboard.Now() + after;
   // Made as the message to publish, not copied into one: a timer is set on most steps.
-  auto message = std::make_shared<TimeoutMsg>();
-  message->set_wakeup(std::to_string(Microseconds(wakeup)));
-  blackboard.PublishMessage(topic, Kind::State, std::move(message));
+  thread_local TimeoutMessages messages;
+  std::shared_ptr<TimeoutMsg> message = messages.Next();
+  char digits[24];
+  const auto written = std::to_chars(digits, digits + sizeof digits, Microseconds(wakeup));
+  message->set_wakeup(digits, static_cast<std::size_t>(written.ptr - digits));
+  blackboard.PublishMessage(topic, Kind::State, std::shared_ptr<const TimeoutMsg>(std::move(message)));
   blackboard.ScheduleWakeup(wakeup);
 }
 

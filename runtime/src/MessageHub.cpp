@@ -21,12 +21,25 @@ struct MessageHub::Topic {
     const Blackboard* origin;  // never handed back to the blackboard that published it
   };
 
+  // Where a message of one type goes: the slot of its key in each subscriber, as
+  // Blackboard::Deliver() answered it, so that the next message of the type is queued there
+  // without the key being looked up again in every board. Made at the type's first publish
+  // after the subscribers last changed (a slot lives as long as its board, and a board leaves
+  // the hub before it goes).
+  struct Route {
+    std::string type_name;
+    std::vector<Blackboard::Slot*> slots;  // subscribers[i]'s, or null while not yet known
+  };
+
   explicit Topic(const std::string& topic) : name(topic), tag(topic) {}
+
+  void SubscribersChanged() { routes.clear(); }
 
   std::string name;
   detail::Tag tag;
   std::vector<Blackboard*> subscribers;
   std::vector<Retained> retained;  // the last State message of each type
+  std::vector<Route> routes;
 };
 
 MessageHub::MessageHub(const Clock& clock) : clock_(clock) {}
@@ -58,6 +71,31 @@ void MessageHub::Publish(const std::string& topic, Kind kind,
   Publish(topic, type_name, kind, std::move(message), origin);
 }
 
+void MessageHub::Deliver(Topic& entry, const std::string& topic, const std::string& type_name, Kind kind,
+                         const std::shared_ptr<const google::protobuf::Message>& message, TimePoint now,
+                         const Blackboard* origin) {
+  Topic::Route* route = nullptr;
+  for (Topic::Route& r : entry.routes) {
+    if (detail::SameString(r.type_name, type_name)) {
+      route = &r;
+      break;
+    }
+  }
+  if (route == nullptr) {
+    entry.routes.push_back(Topic::Route{type_name, std::vector<Blackboard::Slot*>(entry.subscribers.size())});
+    route = &entry.routes.back();
+  }
+  for (std::size_t i = 0; i < entry.subscribers.size(); ++i) {
+    Blackboard* board = entry.subscribers[i];
+    if (board == origin) continue;
+    if (Blackboard::Slot* slot = route->slots[i]) {
+      board->DeliverAt(slot, kind, message, now);
+    } else {
+      route->slots[i] = board->Deliver(topic, type_name, kind, message, now);
+    }
+  }
+}
+
 void MessageHub::Publish(const std::string& topic, const std::string& type_name, Kind kind,
                          std::shared_ptr<const google::protobuf::Message> message,
                          const Blackboard* origin) {
@@ -67,11 +105,7 @@ void MessageHub::Publish(const std::string& topic, const std::string& type_name,
     ++published_;
     Topic* entry = kind == Kind::State ? &TopicFor(topic) : FindTopic(topic);
     if (entry != nullptr) {
-      for (Blackboard* board : entry->subscribers) {
-        if (board != origin) {
-          board->Deliver(topic, type_name, kind, message, now);
-        }
-      }
+      if (!entry->subscribers.empty()) Deliver(*entry, topic, type_name, kind, message, now, origin);
       if (kind == Kind::State) {
         // Kept last, so that the message moves in rather than being shared once more.
         auto retained = std::find_if(entry->retained.begin(), entry->retained.end(),
@@ -130,6 +164,7 @@ void MessageHub::Attach(Blackboard* board, const std::string& topic) {
     return;
   }
   boards.push_back(board);
+  entry.SubscribersChanged();
   for (const Topic::Retained& retained : entry.retained) {
     if (retained.origin != board) {
       board->Deliver(topic, retained.type_name, Kind::State, retained.message, retained.time);
@@ -141,7 +176,11 @@ void MessageHub::Detach(Blackboard* board) {
   std::lock_guard<SpinLock> lock(mutex_);
   for (auto& entry : topics_) {
     auto& boards = entry->subscribers;
-    boards.erase(std::remove(boards.begin(), boards.end(), board), boards.end());
+    const auto kept = std::remove(boards.begin(), boards.end(), board);
+    if (kept != boards.end()) {
+      boards.erase(kept, boards.end());
+      entry->SubscribersChanged();
+    }
   }
 }
 

@@ -118,6 +118,51 @@ TEST_F(Messaging, LateSubscriberStartsWithTheCurrentState) {
   EXPECT_EQ(board.ReadSignal<HeadToBMessage>("worldstate"), nullptr) << "signals are not retained";
 }
 
+TEST_F(Messaging, DeliveriesFollowSubscribersThatComeAndGo) {
+  // The hub remembers where each type of a topic goes in each subscriber: a board that comes,
+  // one that goes (and another made where it was) and a second type on the topic must each get
+  // exactly what they would have got from a lookup per message.
+  auto first = std::make_unique<Blackboard>(hub, "first");
+  first->Subscribe("behavior");
+  hub.Publish("behavior", Kind::Signal, Head(1));
+  hub.Publish("behavior", Kind::State, Head(2));
+  Blackboard second(hub, "second");
+  second.Subscribe("behavior");
+  hub.Publish("behavior", Kind::Signal, Head(3));
+  auto position = std::make_shared<PositionMessage>();
+  position->set_posx(4.0f);
+  hub.Publish("behavior", Kind::State, position);
+  first->ProcessMessages();
+  second.ProcessMessages();
+  EXPECT_EQ(first->ReadSignal<HeadToBMessage>("behavior")->ballfound(), 1);
+  EXPECT_EQ(first->ReadSignal<HeadToBMessage>("behavior")->ballfound(), 3);
+  EXPECT_EQ(first->ReadState<HeadToBMessage>("behavior")->ballfound(), 2);
+  EXPECT_FLOAT_EQ(first->ReadState<PositionMessage>("behavior")->posx(), 4.0f);
+  EXPECT_EQ(second.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 3) << "subscribed after the first signal";
+  EXPECT_EQ(second.ReadSignal<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(second.ReadState<HeadToBMessage>("behavior")->ballfound(), 2) << "the retained state";
+  EXPECT_FLOAT_EQ(second.ReadState<PositionMessage>("behavior")->posx(), 4.0f);
+
+  first.reset();  // leaves the hub; a new board may well take its place in memory
+  auto third = std::make_unique<Blackboard>(hub, "third");
+  third->Subscribe("behavior");
+  hub.Publish("behavior", Kind::Signal, Head(5));
+  second.ProcessMessages();
+  third->ProcessMessages();
+  EXPECT_EQ(second.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 5);
+  EXPECT_EQ(third->ReadSignal<HeadToBMessage>("behavior")->ballfound(), 5);
+  EXPECT_EQ(third->ReadSignal<HeadToBMessage>("behavior"), nullptr);
+  EXPECT_EQ(third->ReadState<HeadToBMessage>("behavior")->ballfound(), 2);
+  EXPECT_EQ(hub.SubscriberCount("behavior"), 2U);
+
+  // a board publishing on the topic does not get its own message back, the others do
+  third->Publish("behavior", Kind::Signal, *Head(6));
+  EXPECT_EQ(third->PendingMessages(), 0U);
+  EXPECT_EQ(second.PendingMessages(), 1U);
+  second.ProcessMessages();
+  EXPECT_EQ(second.ReadSignal<HeadToBMessage>("behavior")->ballfound(), 6);
+}
+
 TEST_F(Messaging, SignalsAreReadOnceInOrder) {
   Blackboard board(hub);
   board.Subscribe("behavior");

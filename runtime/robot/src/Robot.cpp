@@ -1,9 +1,10 @@
 #include <kse/robot/Robot.h>
 
 #include <atomic>
-#include <deque>
 #include <stdexcept>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <kse/messages/all.h>
 
@@ -13,17 +14,21 @@ using messaging::Kind;
 
 namespace {
 
-// The messages of one kind a robot publishes, oldest first. The oldest is used again, cleared,
-// once the robot's is the only reference left: the blackboards keep the last State message (and
-// a Data history of 100 entries), then let it go. A message someone keeps is left to them.
+// The messages of one kind a robot publishes, oldest first, in a ring that keeps its storage.
+// The oldest is used again once the robot's is the only reference left: the blackboards keep
+// the last State message (and a Data history of 100 entries), then let it go. A message someone
+// keeps is left to them.
 template <class T>
 class Recycled {
 public:
-	explicit Recycled(std::size_t keep) : keep_(keep) {}
+	explicit Recycled(std::size_t keep) : ring_(keep) {}
 
-	/** An empty message to publish next: the oldest one when it is free again, else a new one. */
+	/**
+	 * A message to publish next: the oldest one when it is free again, as it was (the caller
+	 * sets every field it ever sets, or clears it), else a new one.
+	 */
 	T& Next() {
-		if (!published_.empty() && published_.front().use_count() == 1) {
+		if (size_ > 0 && ring_[head_].use_count() == 1) {
 			// use_count() is a relaxed load: the fence orders whatever the last other owner did
 			// with the message before it let go (a release, in the count) before our writes.
 			// (ThreadSanitizer does not model fences and warns about them; the owners a robot's
@@ -31,22 +36,33 @@ public:
 #ifndef __SANITIZE_THREAD__
 			std::atomic_thread_fence(std::memory_order_acquire);
 #endif
-			published_.push_back(std::move(published_.front()));
-			published_.pop_front();
-			published_.back()->Clear();
+			std::shared_ptr<T> oldest = std::move(ring_[head_]);
+			head_ = Index(1);
+			ring_[Index(size_ - 1)] = std::move(oldest);  // the newest now
 		} else {
-			published_.push_back(std::make_shared<T>());
-			if (published_.size() > keep_) published_.pop_front();
+			if (size_ == ring_.size()) {
+				ring_[head_].reset();  // the oldest stays with whoever holds it
+				head_ = Index(1);
+				--size_;
+			}
+			ring_[Index(size_)] = std::make_shared<T>();
+			++size_;
 		}
-		return *published_.back();
+		return *ring_[Index(size_ - 1)];
 	}
 
 	/** The message Next() gave, to publish. */
-	std::shared_ptr<const T> Last() const { return published_.back(); }
+	const std::shared_ptr<T>& Last() const { return ring_[Index(size_ - 1)]; }
 
 private:
-	std::size_t keep_;
-	std::deque<std::shared_ptr<T>> published_;
+	std::size_t Index(std::size_t i) const {  // i < the capacity
+		const std::size_t at = head_ + i;
+		return at < ring_.size() ? at : at - ring_.size();
+	}
+
+	std::vector<std::shared_ptr<T>> ring_;
+	std::size_t head_ = 0;  // the oldest
+	std::size_t size_ = 0;
 };
 
 }  // namespace
@@ -91,6 +107,33 @@ bool SameGame(const Perception& a, const Perception& b) {
 
 bool SamePose(const Pose& a, const Pose& b) { return a.x == b.x && a.y == b.y && a.theta == b.theta; }
 
+// The topics and commands, made once (a publish takes the topic as a std::string).
+const std::string kWorldstateTopic = "worldstate";
+const std::string kBehaviorTopic = "behavior";
+const std::string kWalkVelocityCommand = "setWalkTargetVelocity";
+const std::string kWalkToCommand = "walkTo";
+const std::string kHeadCommand = "setHead";
+
+// Writes the perception into a WorldInfo, new or one published before: the same message
+// WorldInfo::Clear() and the setters would make (every field the robot ever sets is set again or
+// cleared; it never sets the others), without clearing what is written again anyway.
+void Fill(WorldInfo& world, const Perception& perception) {
+	auto* me = world.mutable_myposition();
+	me->set_x(perception.estimate.x);
+	me->set_y(perception.estimate.y);
+	me->set_phi(perception.estimate.theta);
+	me->set_confidence(perception.confidence);
+	if (perception.ball.seen) {
+		auto* ball = world.balls_size() > 0 ? world.mutable_balls(0) : world.add_balls();
+		ball->set_relativex(perception.ball.x);
+		ball->set_relativey(perception.ball.y);
+		ball->set_relativexspeed(perception.ball.vx);
+		ball->set_relativeyspeed(perception.ball.vy);
+	} else if (world.balls_size() > 0) {
+		world.mutable_balls()->Clear();
+	}
+}
+
 }  // namespace
 
 MotionCommands Robot::Step(const Perception& perception) {
@@ -113,29 +156,17 @@ MotionCommands Robot::Step(const Perception& perception) {
 		game->set_our_score(perception.our_score);
 		game->set_otherteam_score(perception.their_score);
 		game->set_secs_remaining(perception.secs_remaining);
-		hub_.Publish("worldstate", Kind::State, std::shared_ptr<const GameStateMessage>(std::move(game)));
+		hub_.Publish(kWorldstateTopic, Kind::State, std::shared_ptr<const GameStateMessage>(std::move(game)));
 	}
 
-	WorldInfo& world = recycling_->world.Next();
-	auto* me = world.mutable_myposition();
-	me->set_x(perception.estimate.x);
-	me->set_y(perception.estimate.y);
-	me->set_phi(perception.estimate.theta);
-	me->set_confidence(perception.confidence);
-	if (perception.ball.seen) {
-		auto* ball = world.add_balls();
-		ball->set_relativex(perception.ball.x);
-		ball->set_relativey(perception.ball.y);
-		ball->set_relativexspeed(perception.ball.vx);
-		ball->set_relativeyspeed(perception.ball.vy);
-	}
-	hub_.Publish("worldstate", Kind::Data, recycling_->world.Last());
+	Fill(recycling_->world.Next(), perception);
+	hub_.Publish(kWorldstateTopic, Kind::Data, std::shared_ptr<const WorldInfo>(recycling_->world.Last()));
 
 	if (!last || perception.ball.seen != last->ball.seen) {
 		auto head = std::make_shared<HeadToBMessage>();
 		head->set_ballfound(perception.ball.seen ? 1 : 0);
 		head->set_calibrated(1);
-		hub_.Publish("behavior", Kind::State, std::shared_ptr<const HeadToBMessage>(std::move(head)));
+		hub_.Publish(kBehaviorTopic, Kind::State, std::shared_ptr<const HeadToBMessage>(std::move(head)));
 	}
 
 	if (!last || !SamePose(perception.ready_position, last->ready_position)) {
@@ -143,7 +174,7 @@ MotionCommands Robot::Step(const Perception& perception) {
 		position->set_posx(perception.ready_position.x);
 		position->set_posy(perception.ready_position.y);
 		position->set_theta(perception.ready_position.theta);
-		hub_.Publish("behavior", Kind::State, std::shared_ptr<const PositionMessage>(std::move(position)));
+		hub_.Publish(kBehaviorTopic, Kind::State, std::shared_ptr<const PositionMessage>(std::move(position)));
 	}
 	recycling_->last = perception;
 	recycling_->published_once = true;
@@ -161,13 +192,13 @@ MotionCommands Robot::Step(const Perception& perception) {
 	if (motion_.PendingMessages() == 0) return commands;
 	motion_.ProcessMessages();
 	while (auto walk = recycling_->walk.ReadSignal()) {
-		if (walk->command() == "setWalkTargetVelocity" && walk->parameter_size() >= 3) {
+		if (walk->command() == kWalkVelocityCommand && walk->parameter_size() >= 3) {
 			commands.walk = true;
 			commands.walk_to = false;
 			commands.vx = walk->parameter(0);
 			commands.vy = walk->parameter(1);
 			commands.vtheta = walk->parameter(2);
-		} else if (walk->command() == "walkTo" && walk->parameter_size() >= 3) {
+		} else if (walk->command() == kWalkToCommand && walk->parameter_size() >= 3) {
 			commands.walk_to = true;
 			commands.walk = false;
 			commands.to_x = walk->parameter(0);
@@ -176,7 +207,7 @@ MotionCommands Robot::Step(const Perception& perception) {
 		}
 	}
 	while (auto head_command = recycling_->head.ReadSignal()) {
-		if (head_command->command() == "setHead" && head_command->parameter_size() >= 2) {
+		if (head_command->command() == kHeadCommand && head_command->parameter_size() >= 2) {
 			commands.head = true;
 			commands.yaw = head_command->parameter(0);
 			commands.pitch = head_command->parameter(1);

@@ -234,4 +234,47 @@ TEST(Robot, WorldInfoMessagesInTheHistoryKeepTheirValuesWhileTheRobotReusesOldOn
 	EXPECT_FLOAT_EQ(kept->balls(0).relativex(), 150.0f);
 }
 
+TEST(Robot, AWorldInfoUsedAgainIsTheMessageANewOneWouldBe) {
+	// A reused WorldInfo is written over, not cleared first: whatever it said before (a ball,
+	// then none, then one again) must not show, byte for byte and field by field.
+	kse::messaging::ManualClock clock;
+	kse::robot::Robot robot("RobotTestListener", clock);
+	auto& board = robot.Chart().RootBlackboard();
+	kse::robot::Perception p = InGame();
+	for (int cycle = 0; cycle < 500; ++cycle) {
+		p.estimate = {0.01f * cycle, -0.02f * cycle, 0.003f * cycle};
+		p.confidence = cycle % 4 == 0 ? 0.0f : 0.25f * (cycle % 4);
+		p.ball.seen = (cycle / 5) % 3 != 0;  // runs of cycles with and without a ball
+		p.ball.x = 0.1f * cycle;
+		p.ball.y = cycle % 2 == 0 ? 0.0f : -0.5f;
+		p.ball.vx = -0.01f * cycle;
+		p.ball.vy = 0.0f;
+		robot.Step(p);
+		clock.Advance(std::chrono::milliseconds(30));
+		board.ProcessMessages();
+		WorldInfo expected;
+		auto* me = expected.mutable_myposition();
+		me->set_x(p.estimate.x);
+		me->set_y(p.estimate.y);
+		me->set_phi(p.estimate.theta);
+		me->set_confidence(p.confidence);
+		if (p.ball.seen) {
+			auto* ball = expected.add_balls();
+			ball->set_relativex(p.ball.x);
+			ball->set_relativey(p.ball.y);
+			ball->set_relativexspeed(p.ball.vx);
+			ball->set_relativeyspeed(p.ball.vy);
+		}
+		const auto published = board.ReadData<WorldInfo>("worldstate");
+		ASSERT_NE(published, nullptr);
+		ASSERT_EQ(published->SerializeAsString(), expected.SerializeAsString()) << "cycle " << cycle;
+		ASSERT_EQ(published->DebugString(), expected.DebugString()) << "cycle " << cycle;
+		ASSERT_EQ(published->has_myposition(), true);
+		if (p.ball.seen) {
+			EXPECT_FALSE(published->balls(0).has_absolutex()) << "cycle " << cycle << ": never set by the robot";
+			EXPECT_FALSE(published->balls(0).has_confidence()) << "cycle " << cycle;
+		}
+	}
+}
+
 }  // namespace

@@ -136,6 +136,17 @@ class Blackboard {
   std::vector<Stamped<google::protobuf::Message>> ReadDataHistoryMessages(
       const std::string& topic, const std::string& type_name, TimePoint since) const;
   void PublishMessage(const std::string& topic, Kind kind, MessagePtr message);
+  /// The same for a message of a generated class (they are final), whose type name is then
+  /// looked up once per class instead of through the message's descriptor on every publish.
+  template <class T, std::enable_if_t<std::is_final_v<T> &&
+                                          std::is_base_of_v<google::protobuf::Message, T>,
+                                      int> = 0>
+  void PublishMessage(const std::string& topic, Kind kind, std::shared_ptr<T> message) {
+    if (!message) {
+      return;
+    }
+    PublishNamed(topic, TypeName<std::remove_cv_t<T>>(), kind, std::move(message));
+  }
   void PublishCopy(const std::string& topic, Kind kind, const google::protobuf::Message& message);
 
   /// Number of unread signals of that topic and type.
@@ -171,6 +182,8 @@ class Blackboard {
   void ReadSignalTo(const std::string& topic, const std::string& type_name, Sink sink, void* out);
   void ReadDataTo(const std::string& topic, const std::string& type_name, Sink sink, void* out) const;
 
+  void PublishNamed(const std::string& topic, const std::string& type_name, Kind kind, MessagePtr message);
+
   struct Slot;
   // What a Reader does: its key's slot, made now if no message has come yet (a slot, once
   // made, lives as long as the blackboard), then reads there without looking the key up.
@@ -179,8 +192,11 @@ class Blackboard {
   void ReadSignalAt(Slot* slot, Sink sink, void* out);
   void ReadDataAt(Slot* slot, Sink sink, void* out) const;
 
-  void Deliver(const std::string& topic, const std::string& type_name, Kind kind,
-               const MessagePtr& message, TimePoint time);
+  // What the hub calls for each subscriber; Deliver() answers the key's slot, which the hub
+  // keeps to deliver the next message of that topic and type with DeliverAt() (no lookup).
+  Slot* Deliver(const std::string& topic, const std::string& type_name, Kind kind,
+                const MessagePtr& message, TimePoint time);
+  void DeliverAt(Slot* slot, Kind kind, const MessagePtr& message, TimePoint time);
 
   struct Entry {
     MessagePtr message;
@@ -205,6 +221,9 @@ class Blackboard {
   // The earliest wake-up (ticks of the clock's epoch; the largest value when none), written
   // under mutex_: the engine asks TakeDueWakeups() every cycle, nearly always too early.
   std::atomic<Duration::rep> next_wakeup_{kNoWakeup};
+  // Contents::inbox_size as of the last change (written under mutex_): PendingMessages(), which
+  // a robot asks every cycle of its motion blackboard, reads it without the lock.
+  std::atomic<std::size_t> inbox_size_{0};
   static constexpr Duration::rep kNoWakeup = std::numeric_limits<Duration::rep>::max();
 };
 

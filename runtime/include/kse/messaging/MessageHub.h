@@ -89,6 +89,10 @@ class MessageHub {
   // Callers hold mutex_.
   Topic* FindTopic(const std::string& topic) const;
   Topic& TopicFor(const std::string& topic);
+  // To every subscriber of the topic but the origin.
+  void Deliver(Topic& entry, const std::string& topic, const std::string& type_name, Kind kind,
+               const std::shared_ptr<const google::protobuf::Message>& message, TimePoint now,
+               const Blackboard* origin);
 
   void Attach(Blackboard* board, const std::string& topic);
   void Detach(Blackboard* board);
