@@ -154,13 +154,13 @@ bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) 
   std::lock_guard<EngineLock> lock(engine_lock_);
   for (;;) {
     const std::size_t taken = transitions_taken_.load(std::memory_order_relaxed) - first;
-    if (taken >= record_from && fired_record_ == nullptr) {
+    if (taken >= record_from && !recording_loop_) {
       loop_record_.clear();
-      fired_record_ = &loop_record_;
+      recording_loop_ = true;
     }
     if (!StepRoot()) break;
     if (transitions_taken_.load(std::memory_order_relaxed) - first >= max_transitions) {
-      fired_record_ = nullptr;
+      recording_loop_ = false;
       unsettled_loop_ = DescribeLoop(loop_record_);
       if (!unsettled_loop_.empty()) run_begins_work_.store(true, std::memory_order_release);
       Report(EngineReport::Kind::Warning,
@@ -172,7 +172,7 @@ bool EngineCore::StepUntilQuiet(std::size_t max_transitions, std::size_t first) 
       return false;
     }
   }
-  fired_record_ = nullptr;
+  recording_loop_ = false;
   return true;
 }
 
@@ -183,9 +183,9 @@ std::string EngineCore::DescribeLoop(const std::vector<const TransitionSegmentBa
     if (!std::equal(fired.end() - period, fired.end(), fired.end() - 2 * period)) continue;
     std::string text;
     for (std::size_t i = n - period; i < n; ++i) {
-      text += DescribeLabelled(fired[i]->Source()).substr(6) + " -> ";  // without "state "
+      text += Labelled(fired[i]->Source()) + " -> ";
     }
-    return text + DescribeLabelled(fired[n - 1]->Target()).substr(6);
+    return text + Labelled(fired[n - 1]->Target());
   }
   return "";
 }

@@ -181,9 +181,8 @@ class EngineCore {
   // under engine_lock_, read without it, so that the cycles with nothing to end (most of a
   // robot's) take no lock for it.
   std::atomic<bool> run_begins_work_{false};
-  // Near a RunUntilStable() bound: every segment fired (into loop_record_). Null otherwise
-  // (one test per Fire()).
-  std::vector<const TransitionSegmentBase*>* fired_record_ = nullptr;
+  // Near a RunUntilStable() bound every segment fired goes into loop_record_ (one test per Fire()).
+  bool recording_loop_ = false;
   std::vector<const TransitionSegmentBase*> loop_record_;
   std::string unsettled_loop_;  // under engine_lock_
 
@@ -228,11 +227,14 @@ inline const OrState* AsOr(const State* state) { return static_cast<const OrStat
 
 inline std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
 
-// For the watchdog and Stop(): the model's label too, which is what a modeller sees.
-inline std::string DescribeLabelled(const State* state) {
-  if (state->Label() == state->Name()) return "state '" + state->Name() + "'";
-  return "state " + state->Label() + " '" + state->Name() + "'";
+// A state as a modeller sees it: its label too ("0.2 'Look'", or "'Look'" when it has none).
+inline std::string Labelled(const State* state) {
+  if (state->Label() == state->Name()) return "'" + state->Name() + "'";
+  return state->Label() + " '" + state->Name() + "'";
 }
+
+// For the watchdog and Stop().
+inline std::string DescribeLabelled(const State* state) { return "state " + Labelled(state); }
 
 // "250 ms", "1.3 s": a watchdog limit is often below a second, a hang seldom.
 inline std::string Seconds(std::chrono::steady_clock::duration duration) {

@@ -227,7 +227,7 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
     UnwindIfGivenUp();
   }
   EnterAlong(transition->entry_path_, transition->entry_length_, 0);
-  if (fired_record_ != nullptr) fired_record_->push_back(transition);
+  if (recording_loop_) loop_record_.push_back(transition);
   transitions_taken_.store(transitions_taken_.load(std::memory_order_relaxed) + 1,
                           std::memory_order_relaxed);
   if (observer_) {

@@ -107,6 +107,13 @@ bool SameGame(const Perception& a, const Perception& b) {
 
 bool SamePose(const Pose& a, const Pose& b) { return a.x == b.x && a.y == b.y && a.theta == b.theta; }
 
+// What a failed robot commands: a walk at zero speed.
+MotionCommands StandStill() {
+	MotionCommands stand;
+	stand.walk = true;
+	return stand;
+}
+
 // The topics and commands, made once (a publish takes the topic as a std::string).
 const std::string kWorldstateTopic = "worldstate";
 const std::string kBehaviorTopic = "behavior";
@@ -137,11 +144,7 @@ void Fill(WorldInfo& world, const Perception& perception) {
 }  // namespace
 
 MotionCommands Robot::Step(const Perception& perception) {
-	if (Failed()) {
-		MotionCommands stand;
-		stand.walk = true;  // at zero speed
-		return stand;
-	}
+	if (Failed()) return StandStill();
 	// A State message stands until the next one: one equal to the last would change nothing a
 	// reader sees, so it is published only when it differs (most cycles, none does).
 	const Perception* last = recycling_->published_once ? &recycling_->last : nullptr;
@@ -184,7 +187,7 @@ MotionCommands Robot::Step(const Perception& perception) {
 		const std::string loop = chart.UnsettledLoop();
 		failure_ = "the statechart took " + std::to_string(kTransitionsPerCycle) + " transitions in one decision cycle" +
 		           (loop.empty() ? std::string() : ", round " + loop) + ", without waiting for an activity or a timer";
-		return Step(perception);  // stands
+		return StandStill();
 	}
 
 	MotionCommands commands;
