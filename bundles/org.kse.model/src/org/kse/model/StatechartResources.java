@@ -326,6 +326,13 @@ public final class StatechartResources {
 	public static final String OPTION_STREAMING = "org.kse.model.streaming";
 
 	private static final String DEPTH_PROPERTY = "jdk.xml.maxElementDepth";
+	private static final String GENERAL_ENTITY_PROPERTY = "jdk.xml.maxGeneralEntitySizeLimit";
+	private static final String TOTAL_ENTITY_PROPERTY = "jdk.xml.totalEntitySizeLimit";
+	/** The parser properties a load of KSE's may set; the streaming reader follows each of them. */
+	private static final java.util.Set<String> LIMIT_PROPERTIES = java.util.Set.of(DEPTH_PROPERTY, GENERAL_ENTITY_PROPERTY, TOTAL_ENTITY_PROPERTY);
+	/** The SAX feature that makes the parser refuse a DOCTYPE where it begins, before it reads or fetches anything of it. */
+	private static final String DISALLOW_DOCTYPE = "http://apache.org/xml/features/disallow-doctype-decl";
+	private static final String DOCTYPE_REFUSED = "a model file may not declare a DOCTYPE (KSE files have none)";
 
 	/**
 	 * Loads a model with or without the streaming reader: {@code load(file, false)} is what
@@ -364,10 +371,18 @@ public final class StatechartResources {
 	private static Map<Object, Object> loadOptions() {
 		Map<Object, Object> options = new HashMap<>();
 		options.put(XMLResource.OPTION_DEFER_IDREF_RESOLUTION, Boolean.TRUE);
-		// The JDK's parser refuses elements nested deeper than 100, but KSE writes deeper models
-		// (a formula nests its terms): every model KSE saves must load again. Set on this
+		// No model file has a DOCTYPE, and a DOCTYPE is how hostile XML attacks a parser: entities
+		// that expand a billion times, external DTDs and entities fetched from anywhere. Refused
+		// where it begins, on EMF's way as on the streaming reader's (which leaves it to EMF).
+		options.put(XMLResource.OPTION_PARSER_FEATURES, Map.of(DISALLOW_DOCTYPE, Boolean.TRUE));
+		// Every model KSE saves must load again. The JDK's parser refuses elements nested deeper
+		// than 100, but KSE writes deeper models (a formula nests its terms); and it refuses more
+		// than 100,000 characters of entities (JDK 25), which some 50,000 guards holding && reach.
+		// Without a DOCTYPE the entity limits count only the five predefined entities (&amp; one,
+		// &quot; two...), which cost the parser nothing: lifted ("0" is none). All set on this
 		// parser only, not for the whole JVM.
-		options.put(XMLResource.OPTION_PARSER_PROPERTIES, Map.of("jdk.xml.maxElementDepth", String.valueOf(MAX_ELEMENT_DEPTH)));
+		options.put(XMLResource.OPTION_PARSER_PROPERTIES, Map.of(DEPTH_PROPERTY, String.valueOf(MAX_ELEMENT_DEPTH), GENERAL_ENTITY_PROPERTY, "0",
+				TOTAL_ENTITY_PROPERTY, "0"));
 		return options;
 	}
 
@@ -415,7 +430,7 @@ public final class StatechartResources {
 					int[] length = new int[1];
 					bytes = SpareBuffers.readAll(inputStream, length);
 					try {
-						StctReader.Result result = StctReader.read(bytes, length[0], depthLimit(options));
+						StctReader.Result result = StctReader.read(bytes, length[0], depthLimit(options), entityLimit(options));
 						setEncoding(result.encoding());
 						setXMLVersion("1.0");
 						getContents().add(result.model());
@@ -480,14 +495,20 @@ public final class StatechartResources {
 
 		/** Options that change nothing for a file of KSE's dialect; any other is EMF's to apply. */
 		private static final java.util.Set<Object> PLAIN_LOAD_OPTIONS = java.util.Set.of(XMLResource.OPTION_DEFER_IDREF_RESOLUTION,
-				XMLResource.OPTION_PARSER_PROPERTIES, OPTION_STREAMING);
+				XMLResource.OPTION_PARSER_PROPERTIES, XMLResource.OPTION_PARSER_FEATURES, OPTION_STREAMING);
 
 		private boolean streamingReadable(java.io.InputStream inputStream, Map<?, ?> options) {
 			if (options != null && (Boolean.FALSE.equals(options.get(OPTION_STREAMING)) || !PLAIN_LOAD_OPTIONS.containsAll(options.keySet()))) {
 				return false;
 			}
+			// the limits are followed by the reader; any other property or feature may change what the parser reads
 			if (options != null && options.get(XMLResource.OPTION_PARSER_PROPERTIES) instanceof Map<?, ?> properties
-					&& !properties.keySet().equals(java.util.Set.of(DEPTH_PROPERTY))) {
+					&& !LIMIT_PROPERTIES.containsAll(properties.keySet())) {
+				return false;
+			}
+			// the reader leaves every DOCTYPE to the parser, so refusing them changes nothing for a file it reads
+			if (options != null && options.get(XMLResource.OPTION_PARSER_FEATURES) instanceof Map<?, ?> features
+					&& !java.util.Set.of(DISALLOW_DOCTYPE).containsAll(features.keySet())) {
 				return false;
 			}
 			return !(inputStream instanceof org.eclipse.emf.ecore.resource.URIConverter.Loadable)
@@ -499,16 +520,33 @@ public final class StatechartResources {
 		 * the JDK's as configured (100 in JDK 25); the reader leaves a file that reaches it to the parser.
 		 */
 		private static int depthLimit(Map<?, ?> options) {
+			return parserLimit(options, DEPTH_PROPERTY, StctReader.ParserLimits.ELEMENT_DEPTH);
+		}
+
+		/**
+		 * The parser's entity size limit for this load, the smaller of the general and the total one,
+		 * each as the options set it or, without it, as the JDK is configured (100,000 in JDK 25;
+		 * none in KSE's load options). The reader leaves a file that reaches it to the parser, so the
+		 * two read or refuse the same files whatever the options.
+		 */
+		private static int entityLimit(Map<?, ?> options) {
+			return Math.min(parserLimit(options, GENERAL_ENTITY_PROPERTY, StctReader.ParserLimits.GENERAL_ENTITY_SIZE),
+					parserLimit(options, TOTAL_ENTITY_PROPERTY, StctReader.ParserLimits.TOTAL_ENTITY_SIZE));
+		}
+
+		/** A limit of the parser as the load options set it (0 or less: none), {@code otherwise} when they do not; 0 when the value is no number. */
+		private static int parserLimit(Map<?, ?> options, String property, int otherwise) {
 			Object properties = options == null ? null : options.get(XMLResource.OPTION_PARSER_PROPERTIES);
-			if (properties instanceof Map<?, ?> map && map.get(DEPTH_PROPERTY) != null) {
+			if (properties instanceof Map<?, ?> map && map.get(property) != null) {
 				try {
-					int limit = Integer.parseInt(String.valueOf(map.get(DEPTH_PROPERTY)).trim());
+					int limit = Integer.parseInt(String.valueOf(map.get(property)).trim());
 					return limit <= 0 ? Integer.MAX_VALUE : limit;
 				} catch (NumberFormatException e) {
+					// the reader leaves the file to the parser, which says what it makes of the value
 					return 0;
 				}
 			}
-			return StctReader.ParserLimits.ELEMENT_DEPTH;
+			return otherwise;
 		}
 
 		private boolean streamingWritable(java.io.OutputStream outputStream, Map<?, ?> options) {
@@ -725,6 +763,9 @@ public final class StatechartResources {
 	private static String loadFailure(Path file, Throwable e) {
 		for (Throwable cause = e; cause != null; cause = cause.getCause() == cause ? null : cause.getCause()) {
 			if (cause instanceof SAXParseException parse && parse.getLineNumber() > 0) {
+				if (declaresDoctype(parse)) {
+					return where(file, parse) + ": " + DOCTYPE_REFUSED;
+				}
 				return where(file, parse) + ": not a statechart model: " + xmlMessage(parse);
 			}
 			if (cause instanceof Resource.Diagnostic diagnostic && diagnostic.getLine() > 0) {
@@ -786,7 +827,18 @@ public final class StatechartResources {
 		if (message.contains("maxElementDepth")) {
 			return "the XML nests elements deeper than " + MAX_ELEMENT_DEPTH + ", which KSE does not read";
 		}
+		if (declaresDoctype(e)) {
+			return "it declares a DOCTYPE (KSE files have none)";
+		}
 		return userText(message.replaceFirst("^JAXP\\d+: ", "").replaceAll("\\s*set by \"jdk\\.xml\\.\\w+\"\\.?", ""));
+	}
+
+	/**
+	 * Whether the parser refused a DOCTYPE because {@value #DISALLOW_DOCTYPE} is set: the JDK's
+	 * message names the feature in every language it is translated into.
+	 */
+	private static boolean declaresDoctype(SAXException e) {
+		return String.valueOf(e.getMessage()).contains(DISALLOW_DOCTYPE);
 	}
 
 	/** A library's message without Java in it (class names, object identities). */

@@ -22,10 +22,10 @@ import org.kse.model.statechart.Variable;
  * EMF's parser would read it to the same model: anything else (another encoding, a DOCTYPE, an
  * entity, a processing instruction, text, CDATA, xsi:type, an href, an ID, an element or attribute
  * it does not know, a reference that is not a plain positional path or leads nowhere or to the
- * wrong kind of element, nesting at the parser's depth limit, anything that is not well-formed)
- * raises {@link NotOurs}, and the caller hands the same bytes to EMF, whose messages and safety
- * rules then apply unchanged. Nothing it builds is attached to a resource until the whole file has
- * been read and every reference resolved.
+ * wrong kind of element, nesting or predefined entities at the parser's limits for the load,
+ * anything that is not well-formed) raises {@link NotOurs}, and the caller hands the same bytes to
+ * EMF, whose messages and safety rules then apply unchanged. Nothing it builds is attached to a
+ * resource until the whole file has been read and every reference resolved.
  */
 final class StctReader {
 
@@ -102,29 +102,34 @@ final class StctReader {
 	private static final StatechartFactory FACTORY = StatechartFactory.eINSTANCE;
 
 	/**
-	 * The JDK parser's limits as configured for this JVM (jaxp.properties, system properties):
-	 * the JDK counts each {@code &amp;}, {@code &lt;} and {@code &apos;} in attribute values as one
-	 * character of the document's "general entity", {@code &quot;} and {@code &gt;} as two, and refuses
-	 * a document past the limit (100,000 in JDK 25); without a depth in the load options its
-	 * default element depth applies.
+	 * The JDK parser's limits as configured for this JVM (jaxp.properties, system properties), for a
+	 * load whose options do not set them: the JDK counts each {@code &amp;}, {@code &lt;} and
+	 * {@code &apos;} in attribute values as one character of the document's "general entity",
+	 * {@code &quot;} and {@code &gt;} as two, and refuses a document past either entity size limit
+	 * (100,000 in JDK 25); its default element depth is 100. KSE's own loads set all three
+	 * ({@code StatechartResources.loadOptions()}); the reader follows what a load sets.
 	 */
 	static final class ParserLimits {
-		static final int ENTITY_SIZE;
+		static final int GENERAL_ENTITY_SIZE;
+		static final int TOTAL_ENTITY_SIZE;
 		static final int ELEMENT_DEPTH;
 
 		static {
-			int entities = 100_000;
+			int general = 100_000;
+			int total = 100_000;
 			int depth = 100;
 			try {
 				javax.xml.parsers.SAXParserFactory factory = javax.xml.parsers.SAXParserFactory.newInstance();
 				factory.setNamespaceAware(true);
 				javax.xml.parsers.SAXParser parser = factory.newSAXParser();
-				entities = Math.min(limit(parser, "jdk.xml.maxGeneralEntitySizeLimit"), limit(parser, "jdk.xml.totalEntitySizeLimit"));
+				general = limit(parser, "jdk.xml.maxGeneralEntitySizeLimit");
+				total = limit(parser, "jdk.xml.totalEntitySizeLimit");
 				depth = limit(parser, "jdk.xml.maxElementDepth");
 			} catch (Exception | LinkageError e) {
 				// not the JDK's parser, or it does not say: the JDK 25 defaults, which only make the reader leave more files to EMF
 			}
-			ENTITY_SIZE = entities;
+			GENERAL_ENTITY_SIZE = general;
+			TOTAL_ENTITY_SIZE = total;
 			ELEMENT_DEPTH = depth;
 		}
 
@@ -144,6 +149,8 @@ final class StctReader {
 	private int entities;
 	private final int end;
 	private final int maxDepth;
+	/** The parser's entity size limit for this load: a file that reaches it is left to the parser, which refuses it. */
+	private final int maxEntities;
 	private int at;
 
 	/** The elements open at {@link #at}, innermost last, with their tag names. */
@@ -165,21 +172,24 @@ final class StctReader {
 	private boolean valuePlain;
 	private boolean valueAscii;
 
-	private StctReader(byte[] text, int length, boolean utf8, int maxDepth) {
+	private StctReader(byte[] text, int length, boolean utf8, int maxDepth, int maxEntities) {
 		this.text = text;
 		this.end = length;
 		this.utf8 = utf8;
 		this.maxDepth = maxDepth;
+		this.maxEntities = maxEntities;
 	}
 
 	/**
 	 * @param maxDepth the XML parser's element depth limit: a file nested that deep is left to the parser, which refuses it
+	 * @param maxEntities the smaller of the parser's general and total entity size limits ({@link Integer#MAX_VALUE} for
+	 *            none): a file with that many predefined entities (as the parser counts them) is left to the parser
 	 */
-	static Result read(byte[] bytes, int length, int maxDepth) throws NotOurs {
+	static Result read(byte[] bytes, int length, int maxDepth, int maxEntities) throws NotOurs {
 		String encoding = declaredEncoding(bytes, length);
 		// Every byte is checked where it is read: markup against the dialect, values and comments
 		// for characters XML 1.0 cannot hold (and, in an ASCII file, for bytes above 0x7F).
-		StctReader reader = new StctReader(bytes, length, encoding.equals("UTF-8"), maxDepth);
+		StctReader reader = new StctReader(bytes, length, encoding.equals("UTF-8"), maxDepth, maxEntities);
 		Model model = reader.document();
 		reader.resolve(model);
 		return new Result(model, encoding);
@@ -938,7 +948,7 @@ final class StctReader {
 			}
 			if (reference.charAt(0) != '#') {
 				entities += reference.equals("quot") || reference.equals("gt") ? 2 : 1;
-				if (entities >= ParserLimits.ENTITY_SIZE) {
+				if (entities >= maxEntities) {
 					at = offset;
 					throw notOurs("more predefined entities than the parser reads");
 				}

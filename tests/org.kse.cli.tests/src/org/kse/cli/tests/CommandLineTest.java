@@ -609,8 +609,14 @@ class CommandLineTest {
 					"<?xml version=\"1.0\" encoding=\"ASCII\"?>\n<!DOCTYPE m [ <!ENTITY x SYSTEM \"" + remote + "/entity\"> ]>")
 					.replaceFirst("  <variables ", "  <variables>&x;</variables>\n  <variables "));
 
-			Run entity = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", externalEntity.toString()));
-			assertTrue(entity.code() == Kse.INVALID || entity.code() == Kse.FAILED, entity::all);
+			Path externalDtd = directory.resolve("ExternalDtd.stct");
+			Files.writeString(externalDtd, goalie.replaceFirst("\\?>", "?><!DOCTYPE x SYSTEM \"" + remote + "/model.dtd\">"));
+
+			// a DOCTYPE is refused where it begins, before its entity or DTD is fetched
+			Run entity = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", externalEntity.toString(), externalDtd.toString()));
+			assertEquals(Kse.FAILED, entity.code(), entity::all);
+			assertTrue(entity.err().contains(externalEntity + ":2:10: a model file may not declare a DOCTYPE (KSE files have none)"), entity::all);
+			assertTrue(entity.err().contains(externalDtd + ":1:48: a model file may not declare a DOCTYPE (KSE files have none)"), entity::all);
 			Run cross = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", crossDocument.toString()));
 			assertEquals(Kse.INVALID, cross.code(), cross::all);
 			assertTrue(cross.out().contains("error: the transition's target is in another document (" + remote + "/other.stct#//@nodes.0), which KSE does not open"), cross::all);

@@ -259,14 +259,16 @@ class StreamingModelIoTest {
 
 	/**
 	 * The JDK's parser refuses a document with more than 100,000 predefined entities (counting
-	 * {@code &quot;} twice) and one nested deeper than its limit; the streaming reader leaves files
-	 * at those limits to it, so that they are read or refused as before.
+	 * {@code &quot;} twice) and one nested deeper than its limit. KSE's loads lift the entity limits
+	 * (a model file has no DOCTYPE, so they only count the predefined ones) and raise the depth; the
+	 * streaming reader follows the limits a load sets, and leaves files at them to the parser, so
+	 * that they are read or refused as EMF reads or refuses them.
 	 */
 	@Test
 	void theParsersLimitsStayTheParsers() throws IOException {
 		StatechartFactory factory = StatechartFactory.eINSTANCE;
 		// six entities a state: &amp;&amp;&lt;&lt;&quot;
-		for (int states : new int[] { 16_665, 16_667 }) {
+		for (int states : new int[] { 8_332, 8_334, 16_665, 16_667 }) {
 			Model model = factory.createModel();
 			Node root = factory.createNode();
 			model.getNodes().add(root);
@@ -277,14 +279,24 @@ class StreamingModelIoTest {
 			}
 			Path file = directory.resolve("entities" + states + ".stct");
 			Files.write(file, StatechartResources.toBytes(model));
+			// KSE's own load options: no entity limit, whatever the JDK's
 			Outcome ours = Outcome.of(file, true);
 			Outcome emf = Outcome.of(file, false);
-			assertEquals(emf.message, ours.message, states + " states");
-			if (states == 16_665) {
-				assertTrue(StatechartResources.streamed(ours.model.eResource()), StatechartResources.fallbackReason(ours.model.eResource()));
-				assertSameModel(emf.model, ours.model, "entities");
-			} else {
-				assertTrue(ours.message.contains("exceeds the \"100,000\" limit"), ours.message);
+			assertTrue(StatechartResources.streamed(ours.model.eResource()), StatechartResources.fallbackReason(ours.model.eResource()));
+			assertSameModel(emf.model, ours.model, states + " states");
+			// a load that sets the JDK 25 default, or a lower total
+			for (Map<String, String> limits : List.of(Map.of("jdk.xml.maxGeneralEntitySizeLimit", "100000"),
+					Map.of("jdk.xml.maxGeneralEntitySizeLimit", "0", "jdk.xml.totalEntitySizeLimit", "50000"))) {
+				int limit = limits.containsKey("jdk.xml.totalEntitySizeLimit") ? 50_000 : 100_000;
+				Outcome limited = Outcome.of(file, true, limits);
+				Outcome limitedEmf = Outcome.of(file, false, limits);
+				assertEquals(limitedEmf.message, limited.message, states + " states, " + limits);
+				if (6 * states < limit) {
+					assertTrue(StatechartResources.streamed(limited.model.eResource()), StatechartResources.fallbackReason(limited.model.eResource()));
+					assertSameModel(limitedEmf.model, limited.model, states + " states, " + limits);
+				} else {
+					assertTrue(limited.message.contains("\"" + String.format(java.util.Locale.ROOT, "%,d", limit) + "\" limit"), limited.message);
+				}
 			}
 		}
 		// the root is at depth 1, its states at 2: the deepest state of a chain of n is at n + 1
@@ -534,6 +546,24 @@ class StreamingModelIoTest {
 		static Outcome of(Path file, boolean streaming) {
 			try {
 				return new Outcome(StatechartResources.load(file, streaming), null);
+			} catch (IOException e) {
+				return new Outcome(null, e.getMessage());
+			}
+		}
+
+		/** Loaded with KSE's options but the parser's limits {@code limits}; the message is the parser's as EMF passes it on. */
+		static Outcome of(Path file, boolean streaming, Map<String, String> limits) {
+			Map<Object, Object> options = new java.util.HashMap<>();
+			options.put(XMLResource.OPTION_DEFER_IDREF_RESOLUTION, Boolean.TRUE);
+			options.put(XMLResource.OPTION_PARSER_FEATURES, Map.of("http://apache.org/xml/features/disallow-doctype-decl", Boolean.TRUE));
+			options.put(XMLResource.OPTION_PARSER_PROPERTIES, limits);
+			if (!streaming) {
+				options.put(StatechartResources.OPTION_STREAMING, Boolean.FALSE);
+			}
+			Resource resource = StatechartResources.newResourceSet().createResource(URI.createFileURI(file.toAbsolutePath().toString()));
+			try {
+				resource.load(options);
+				return new Outcome((Model) resource.getContents().get(0), null);
 			} catch (IOException e) {
 				return new Outcome(null, e.getMessage());
 			}
