@@ -92,6 +92,8 @@ public:
 		return count;
 	}
 
+	statechart_engine::Statechart& Chart() { return chart_->Chart(); }
+
 	std::string Trace() const {
 		std::string trace = "entered:";
 		for (const auto& state : entered_) trace += " " + state;
@@ -172,6 +174,34 @@ TEST(Goalie, DivesTowardsAShotItSeesComing) {
 	EXPECT_TRUE(goalie.Entered("Node_SpecialAction")) << goalie.Trace();
 	const auto actions = goalie.Actions();
 	EXPECT_NE(std::find(actions.begin(), actions.end(), "goalieLeft"), actions.end());
+}
+
+TEST(Activities, CommandTheRobotWithoutKeepingTheirCommandsOnTheirOwnBlackboard) {
+	// RobotIO publishes to the hub: the robot's blackboard gets every command, the activity's own
+	// keeps none of them as unread signals (a thousand of each kind would wait there otherwise).
+	Behaviour attacker("Attacker");
+	attacker.Playing();
+	attacker.World(0, 0, true, 1.0f, 0.2f);
+	attacker.Run(400ms);
+	ASSERT_TRUE(attacker.Entered("Node_ApproachBall")) << attacker.Trace();
+	auto& own = attacker.Chart().RootBlackboard();
+	own.ProcessMessages();
+	EXPECT_EQ(own.PendingSignals("motion", "MotionWalkMessage"), 0U);
+	EXPECT_EQ(own.PendingSignals("motion", "MotionHeadMessage"), 0U);
+	EXPECT_EQ(own.ReadSignal<MotionWalkMessage>("motion"), nullptr);
+	const auto walk = attacker.LastWalk();
+	ASSERT_NE(walk, nullptr) << "the robot's blackboard got the walk";
+	EXPECT_EQ(walk->command(), "setWalkTargetVelocity");
+	EXPECT_EQ(walk->parameter_size(), 4);
+
+	// a command kept by a reader stays as it was while the activity goes on commanding
+	const std::string kept = walk->DebugString();
+	attacker.World(0, 0, true, 0.5f, -0.3f);
+	attacker.Run(400ms);
+	const auto next = attacker.LastWalk();
+	ASSERT_NE(next, nullptr);
+	EXPECT_NE(next, walk);
+	EXPECT_EQ(walk->DebugString(), kept);
 }
 
 }  // namespace

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 
 #include "SameString.h"
+#include "kse/messaging/SpinLock.h"
 
 namespace kse::messaging {
 
@@ -137,51 +140,101 @@ struct Key {
 // Everything a blackboard holds for one topic and type. Slots are made on the first message
 // (or write) of their key and kept: a robot's blackboard sees the same few keys every cycle.
 struct Blackboard::Slot {
-  std::string topic;
-  std::string type_name;
-  Entry state;  // message null: no State message yet
-  Ring<MessagePtr> signals;
-  Ring<Entry> data;
+  // Laid out by use: a delivery goes from the hub straight here and to the contents named here
+  // (not through the blackboard); State messages are in the first cache line, the queues after,
+  // the key's strings last (compared only when a key does not fit in its tag).
+  Contents* owner = nullptr;
+  bool pending = false;  // listed in Contents::pending
+  Entry state;           // message null: no State message yet
   // The inbox: what arrived since the last ProcessMessages(), bounded as the visible part is
   // (a State message replaces the one waiting before it).
   Entry inbox_state;  // message null: none waiting
+  Ring<MessagePtr> signals;
   Ring<MessagePtr> inbox_signals;
+  Ring<Entry> data;
   Ring<Entry> inbox_data;
-  bool pending = false;  // listed in Contents::pending
+  std::string topic;
+  std::string type_name;
 };
 
 struct Blackboard::Contents {
-  std::vector<std::string> topics;  // subscribed
+  // What every call looks at first, together: the lock, the inbox's size and the earliest
+  // wake-up, the last two read without the lock on the paths that usually find nothing.
+  mutable SpinLock mutex;
+  // inbox_size as of the last change (written under mutex): ProcessMessages() and
+  // PendingMessages(), which a robot asks every cycle, tell an empty inbox from it.
+  std::atomic<std::size_t> inbox_size_seen{0};
+  // The earliest wake-up (ticks of the clock's epoch; the largest value when none), written
+  // under mutex: the engine asks TakeDueWakeups() every cycle, nearly always too early.
+  std::atomic<Duration::rep> next_wakeup{kNoWakeup};
+  std::size_t inbox_size = 0;
+  std::vector<Slot*> pending;  // slots with something in their inbox
   // The slots and, side by side in one small array, the tags of their keys: a lookup scans the
   // tags and compares strings once.
-  std::vector<std::unique_ptr<Slot>> slots;
   std::vector<Key> keys;
-  std::vector<Slot*> pending;  // slots with something in their inbox
-  std::size_t inbox_size = 0;
-  std::vector<TimePoint> wakeups;  // sorted, equal times kept (each is one wake-up)
+  std::vector<std::unique_ptr<Slot>> slots;
+  std::vector<std::string> topics;  // subscribed
+  std::vector<TimePoint> wakeups;   // sorted, equal times kept (each is one wake-up)
+
+  static constexpr Duration::rep kNoWakeup = std::numeric_limits<Duration::rep>::max();
 };
 
-Blackboard::Blackboard(MessageHub& hub, std::string name) : hub_(hub), name_(std::move(name)) {}
+Blackboard::Blackboard(MessageHub& hub, const std::string& name) : hub_(&hub) {
+  if (name.size() <= kShortName) {
+    std::memcpy(name_, name.data(), name.size());
+    name_size_ = static_cast<unsigned char>(name.size());
+  } else {
+    // A copy of just the name, its address and length where a short name would be.
+    char* copy = new char[name.size()];
+    std::memcpy(copy, name.data(), name.size());
+    const std::uint32_t size = static_cast<std::uint32_t>(std::min<std::size_t>(name.size(), UINT32_MAX));
+    std::memcpy(name_, &copy, sizeof copy);
+    std::memcpy(name_ + sizeof copy, &size, sizeof size);
+    name_size_ = kLongName;
+  }
+}
 
 Blackboard::~Blackboard() {
+  Contents* c = contents_.load(std::memory_order_acquire);
   // Only a subscription puts a blackboard into the hub.
-  if (contents_ && !contents_->topics.empty()) hub_.Detach(this);
+  if (c != nullptr && !c->topics.empty()) hub_->Detach(this);
+  delete c;
+  if (name_size_ == kLongName) {
+    char* copy;
+    std::memcpy(&copy, name_, sizeof copy);
+    delete[] copy;
+  }
+}
+
+std::string Blackboard::Name() const {
+  if (name_size_ != kLongName) return std::string(name_, name_size_);
+  const char* copy;
+  std::uint32_t size;
+  std::memcpy(&copy, name_, sizeof copy);
+  std::memcpy(&size, name_ + sizeof copy, sizeof size);
+  return std::string(copy, size);
 }
 
 Blackboard::Contents& Blackboard::Made() {
-  if (!contents_) contents_ = std::make_unique<Contents>();
-  return *contents_;
+  Contents* c = contents_.load(std::memory_order_acquire);
+  if (c != nullptr) return *c;
+  // Two threads may come here at once: one's contents are installed, the other's dropped, and
+  // both go on with the installed ones.
+  auto made = std::make_unique<Contents>();
+  if (contents_.compare_exchange_strong(c, made.get(), std::memory_order_acq_rel, std::memory_order_acquire)) {
+    return *made.release();
+  }
+  return *c;
 }
 
-Blackboard::Slot* Blackboard::Find(const std::string& topic, const std::string& type_name) const {
-  if (!contents_) return nullptr;
+Blackboard::Slot* Blackboard::Find(const Contents& contents, const std::string& topic, const std::string& type_name) {
   // A handful of keys per blackboard, looked up on every read and delivery: a scan of their
   // tags beats a tree of string comparisons.
   const Key key(topic, type_name);
-  const auto& keys = contents_->keys;
+  const auto& keys = contents.keys;
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (keys[i] == key) {
-      Slot* slot = contents_->slots[i].get();
+      Slot* slot = contents.slots[i].get();
       if (key.Fits() ||
           (detail::SameString(slot->type_name, type_name) && detail::SameString(slot->topic, topic))) {
         return slot;
@@ -191,51 +244,53 @@ Blackboard::Slot* Blackboard::Find(const std::string& topic, const std::string& 
   return nullptr;
 }
 
-Blackboard::Slot& Blackboard::SlotFor(const std::string& topic, const std::string& type_name) {
-  if (Slot* slot = Find(topic, type_name)) return *slot;
+Blackboard::Slot& Blackboard::SlotFor(Contents& contents, const std::string& topic, const std::string& type_name) {
+  if (Slot* slot = Find(contents, topic, type_name)) return *slot;
   auto slot = std::make_unique<Slot>();
+  slot->owner = &contents;
   slot->topic = topic;
   slot->type_name = type_name;
-  Contents& c = Made();
-  c.keys.emplace_back(topic, type_name);
-  c.slots.push_back(std::move(slot));
-  return *c.slots.back();
+  contents.keys.emplace_back(topic, type_name);
+  contents.slots.push_back(std::move(slot));
+  return *contents.slots.back();
 }
 
 void Blackboard::Subscribe(const std::string& topic) {
   {
-    std::lock_guard<SpinLock> lock(mutex_);
-    auto& topics = Made().topics;
-    if (std::find(topics.begin(), topics.end(), topic) != topics.end()) {
+    Contents& c = Made();
+    std::lock_guard<SpinLock> lock(c.mutex);
+    if (std::find(c.topics.begin(), c.topics.end(), topic) != c.topics.end()) {
       return;
     }
-    topics.push_back(topic);
+    c.topics.push_back(topic);
   }
-  // Not under mutex_: the hub delivers retained state into this blackboard (hub, then board lock).
-  hub_.Attach(this, topic);
+  // Not under the lock: the hub delivers retained state into this blackboard (hub, then board lock).
+  hub_->Attach(this, topic);
 }
 
 bool Blackboard::IsSubscribed(const std::string& topic) const {
-  std::lock_guard<SpinLock> lock(mutex_);
-  return contents_ &&
-         std::find(contents_->topics.begin(), contents_->topics.end(), topic) != contents_->topics.end();
+  Contents* c = Peek();
+  if (c == nullptr) return false;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  return std::find(c->topics.begin(), c->topics.end(), topic) != c->topics.end();
 }
 
 Blackboard::Slot* Blackboard::Deliver(const std::string& topic, const std::string& type_name, Kind kind,
                                       const MessagePtr& message, TimePoint time) {
-  std::lock_guard<SpinLock> lock(mutex_);
-  Slot& slot = SlotFor(topic, type_name);
-  Queue(slot, kind, message, time);
+  Contents& c = Made();  // made already: only a subscribed blackboard is delivered to
+  std::lock_guard<SpinLock> lock(c.mutex);
+  Slot& slot = SlotFor(c, topic, type_name);
+  Queue(c, slot, kind, message, time);
   return &slot;
 }
 
 void Blackboard::DeliverAt(Slot* slot, Kind kind, const MessagePtr& message, TimePoint time) {
-  std::lock_guard<SpinLock> lock(mutex_);
-  Queue(*slot, kind, message, time);
+  Contents& c = *slot->owner;
+  std::lock_guard<SpinLock> lock(c.mutex);
+  Queue(c, *slot, kind, message, time);
 }
 
-void Blackboard::Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
-  Contents& c = *contents_;
+void Blackboard::Queue(Contents& c, Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
   switch (kind) {
     case Kind::State:
       if (!slot.inbox_state.message) ++c.inbox_size;
@@ -262,7 +317,7 @@ void Blackboard::Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoi
     slot.pending = true;
     c.pending.push_back(&slot);
   }
-  inbox_size_.store(c.inbox_size, std::memory_order_release);
+  c.inbox_size_seen.store(c.inbox_size, std::memory_order_release);
 }
 
 void Blackboard::Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time) {
@@ -289,12 +344,13 @@ void Blackboard::ProcessMessages() {
   // An empty inbox (every guard of a step after the first refreshes the same blackboard) is
   // told without the lock. A message delivered meanwhile by another thread is made visible at
   // the next call, as if it had come just after this one.
-  if (inbox_size_.load(std::memory_order_acquire) == 0) return;
-  std::lock_guard<SpinLock> lock(mutex_);
-  if (!contents_ || contents_->inbox_size == 0) {
+  Contents* contents = Peek();
+  if (contents == nullptr || contents->inbox_size_seen.load(std::memory_order_acquire) == 0) return;
+  Contents& c = *contents;
+  std::lock_guard<SpinLock> lock(c.mutex);
+  if (c.inbox_size == 0) {
     return;
   }
-  Contents& c = *contents_;
   // Keys are independent of each other: in each, the order of arrival is kept.
   for (Slot* slot : c.pending) {
     if (slot->inbox_state.message) {
@@ -313,25 +369,30 @@ void Blackboard::ProcessMessages() {
   }
   c.pending.clear();
   c.inbox_size = 0;
-  inbox_size_.store(0, std::memory_order_release);
+  c.inbox_size_seen.store(0, std::memory_order_release);
 }
 
 std::size_t Blackboard::PendingMessages() const {
   // Written under the lock at every change of the inbox: the count as of the last one.
-  return inbox_size_.load(std::memory_order_acquire);
+  const Contents* c = Peek();
+  return c == nullptr ? 0 : c->inbox_size_seen.load(std::memory_order_acquire);
 }
 
 void Blackboard::ReadStateTo(const std::string& topic, const std::string& type_name, Sink sink,
                              void* out) const {
-  std::lock_guard<SpinLock> lock(mutex_);
-  const Slot* slot = Find(topic, type_name);
+  const Contents* c = Peek();
+  if (c == nullptr) return;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  const Slot* slot = Find(*c, topic, type_name);
   if (slot != nullptr && slot->state.message) sink(slot->state.message, out);
 }
 
 void Blackboard::ReadSignalTo(const std::string& topic, const std::string& type_name, Sink sink,
                               void* out) {
-  std::lock_guard<SpinLock> lock(mutex_);
-  Slot* slot = Find(topic, type_name);
+  Contents* c = Peek();
+  if (c == nullptr) return;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  Slot* slot = Find(*c, topic, type_name);
   if (slot == nullptr || slot->signals.empty()) return;
   sink(slot->signals.front(), out);
   slot->signals.pop_front();
@@ -339,30 +400,33 @@ void Blackboard::ReadSignalTo(const std::string& topic, const std::string& type_
 
 void Blackboard::ReadDataTo(const std::string& topic, const std::string& type_name, Sink sink,
                             void* out) const {
-  std::lock_guard<SpinLock> lock(mutex_);
-  Slot* slot = Find(topic, type_name);
+  const Contents* c = Peek();
+  if (c == nullptr) return;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  Slot* slot = Find(*c, topic, type_name);
   if (slot != nullptr && !slot->data.empty()) sink(slot->data.back().message, out);
 }
 
 Blackboard::Slot* Blackboard::SlotOf(const std::string& topic, const std::string& type_name) {
-  std::lock_guard<SpinLock> lock(mutex_);
-  return &SlotFor(topic, type_name);
+  Contents& c = Made();
+  std::lock_guard<SpinLock> lock(c.mutex);
+  return &SlotFor(c, topic, type_name);
 }
 
-void Blackboard::ReadStateAt(Slot* slot, Sink sink, void* out) const {
-  std::lock_guard<SpinLock> lock(mutex_);
+void Blackboard::ReadStateAt(Contents* contents, Slot* slot, Sink sink, void* out) {
+  std::lock_guard<SpinLock> lock(contents->mutex);
   if (slot->state.message) sink(slot->state.message, out);
 }
 
-void Blackboard::ReadSignalAt(Slot* slot, Sink sink, void* out) {
-  std::lock_guard<SpinLock> lock(mutex_);
+void Blackboard::ReadSignalAt(Contents* contents, Slot* slot, Sink sink, void* out) {
+  std::lock_guard<SpinLock> lock(contents->mutex);
   if (slot->signals.empty()) return;
   sink(slot->signals.front(), out);
   slot->signals.pop_front();
 }
 
-void Blackboard::ReadDataAt(Slot* slot, Sink sink, void* out) const {
-  std::lock_guard<SpinLock> lock(mutex_);
+void Blackboard::ReadDataAt(Contents* contents, Slot* slot, Sink sink, void* out) {
+  std::lock_guard<SpinLock> lock(contents->mutex);
   if (!slot->data.empty()) sink(slot->data.back().message, out);
 }
 
@@ -403,8 +467,10 @@ Blackboard::MessagePtr Blackboard::ReadDataMessage(const std::string& topic,
 std::vector<Stamped<google::protobuf::Message>> Blackboard::ReadDataHistoryMessages(
     const std::string& topic, const std::string& type_name, TimePoint since) const {
   std::vector<Stamped<google::protobuf::Message>> out;
-  std::lock_guard<SpinLock> lock(mutex_);
-  const Slot* slot = Find(topic, type_name);
+  const Contents* c = Peek();
+  if (c == nullptr) return out;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  const Slot* slot = Find(*c, topic, type_name);
   if (slot == nullptr) {
     return out;
   }
@@ -419,8 +485,10 @@ std::vector<Stamped<google::protobuf::Message>> Blackboard::ReadDataHistoryMessa
 
 std::size_t Blackboard::PendingSignals(const std::string& topic,
                                        const std::string& type_name) const {
-  std::lock_guard<SpinLock> lock(mutex_);
-  const Slot* slot = Find(topic, type_name);
+  const Contents* c = Peek();
+  if (c == nullptr) return 0;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  const Slot* slot = Find(*c, topic, type_name);
   return slot == nullptr ? 0 : slot->signals.size();
 }
 
@@ -436,10 +504,11 @@ void Blackboard::PublishNamed(const std::string& topic, const std::string& type_
                               MessagePtr message) {
   const TimePoint now = Now();
   {
-    std::lock_guard<SpinLock> lock(mutex_);
-    Apply(SlotFor(topic, type_name), kind, message, now);
+    Contents& c = Made();
+    std::lock_guard<SpinLock> lock(c.mutex);
+    Apply(SlotFor(c, topic, type_name), kind, message, now);
   }
-  hub_.Publish(topic, type_name, kind, std::move(message), this);
+  hub_->Publish(topic, type_name, kind, std::move(message), this);
 }
 
 void Blackboard::PublishCopy(const std::string& topic, Kind kind,
@@ -450,36 +519,41 @@ void Blackboard::PublishCopy(const std::string& topic, Kind kind,
 }
 
 void Blackboard::ScheduleWakeup(TimePoint time) {
-  std::lock_guard<SpinLock> lock(mutex_);
-  auto& wakeups = Made().wakeups;
+  Contents& c = Made();
+  std::lock_guard<SpinLock> lock(c.mutex);
+  auto& wakeups = c.wakeups;
   wakeups.insert(std::upper_bound(wakeups.begin(), wakeups.end(), time), time);
-  next_wakeup_.store(wakeups.front().time_since_epoch().count(), std::memory_order_release);
+  c.next_wakeup.store(wakeups.front().time_since_epoch().count(), std::memory_order_release);
 }
 
 std::optional<TimePoint> Blackboard::NextWakeup() const {
-  std::lock_guard<SpinLock> lock(mutex_);
-  if (!contents_ || contents_->wakeups.empty()) {
+  const Contents* c = Peek();
+  if (c == nullptr) return std::nullopt;
+  std::lock_guard<SpinLock> lock(c->mutex);
+  if (c->wakeups.empty()) {
     return std::nullopt;
   }
-  return contents_->wakeups.front();
+  return c->wakeups.front();
 }
 
 bool Blackboard::TakeDueWakeups(TimePoint now) {
   // None due yet (the usual answer) is told without the lock. A wake-up scheduled meanwhile by
   // another thread is taken at the next call, as if it had come just after this one.
-  if (now.time_since_epoch().count() < next_wakeup_.load(std::memory_order_acquire)) {
+  Contents* contents = Peek();
+  if (contents == nullptr ||
+      now.time_since_epoch().count() < contents->next_wakeup.load(std::memory_order_acquire)) {
     return false;
   }
-  std::lock_guard<SpinLock> lock(mutex_);
-  if (!contents_) return false;
-  auto& wakeups = contents_->wakeups;
+  Contents& c = *contents;
+  std::lock_guard<SpinLock> lock(c.mutex);
+  auto& wakeups = c.wakeups;
   auto end = std::upper_bound(wakeups.begin(), wakeups.end(), now);
   if (end == wakeups.begin()) {
     return false;
   }
   wakeups.erase(wakeups.begin(), end);
-  next_wakeup_.store(wakeups.empty() ? kNoWakeup : wakeups.front().time_since_epoch().count(),
-                     std::memory_order_release);
+  c.next_wakeup.store(wakeups.empty() ? Contents::kNoWakeup : wakeups.front().time_since_epoch().count(),
+                      std::memory_order_release);
   return true;
 }
 

@@ -89,7 +89,7 @@ void MessageHub::Deliver(Topic& entry, const std::string& topic, const std::stri
     Blackboard* board = entry.subscribers[i];
     if (board == origin) continue;
     if (Blackboard::Slot* slot = route->slots[i]) {
-      board->DeliverAt(slot, kind, message, now);
+      Blackboard::DeliverAt(slot, kind, message, now);
     } else {
       route->slots[i] = board->Deliver(topic, type_name, kind, message, now);
     }

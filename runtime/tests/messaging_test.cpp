@@ -4,10 +4,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <malloc.h>
+
 #include <atomic>
+#include <new>
 #include <thread>
 
 #include <google/protobuf/dynamic_message.h>
+
+#include "kse/messaging/Recycled.h"
 
 #include "test_support.h"
 
@@ -479,6 +484,123 @@ TEST_F(Messaging, WakeupsScheduledMeanwhileOnAnotherThreadAreTakenLater) {
   EXPECT_FALSE(board.NextWakeup().has_value());
   EXPECT_FALSE(board.TakeDueWakeups(clock.Now()));
   EXPECT_GE(taken.load(), 1);
+}
+
+TEST_F(Messaging, AnUnusedBlackboardIsThirtyTwoBytesAndTakesNothingFromTheHeap) {
+  // Every statechart has a root blackboard and every AND region one more; most never hold a
+  // message. 100 of them, named like charts and regions, made where no allocation hides.
+  EXPECT_LE(sizeof(Blackboard), 32U);
+  constexpr int kBoards = 100;
+  alignas(Blackboard) static unsigned char storage[kBoards][sizeof(Blackboard)];
+  const std::string name = "Node_ChaseBall";  // 14 characters, kept in place
+  (void)Blackboard::TypeName<HeadToBMessage>();  // the type's name, looked up once per process
+  const std::size_t before = mallinfo2().uordblks;
+  for (auto& place : storage) new (place) Blackboard(hub, name);
+  const std::size_t after = mallinfo2().uordblks;
+  EXPECT_EQ(after, before) << "unused blackboards took heap memory";
+  auto& board = *std::launder(reinterpret_cast<Blackboard*>(storage[0]));
+  // what an unused blackboard answers, without making anything
+  const bool subscribed = board.IsSubscribed("behavior");
+  const bool state = board.ReadState<HeadToBMessage>("behavior") != nullptr;
+  const bool signal = board.ReadSignal<HeadToBMessage>("behavior") != nullptr;
+  const bool data = board.ReadData<HeadToBMessage>("behavior") != nullptr;
+  const std::size_t pending = board.PendingMessages();
+  const bool wakeup = board.NextWakeup().has_value();
+  const bool due = board.TakeDueWakeups(clock.Now());
+  board.ProcessMessages();
+  EXPECT_EQ(mallinfo2().uordblks, after) << "reading an unused blackboard took heap memory";
+  EXPECT_FALSE(subscribed);
+  EXPECT_FALSE(state);
+  EXPECT_FALSE(signal);
+  EXPECT_FALSE(data);
+  EXPECT_EQ(pending, 0U);
+  EXPECT_FALSE(wakeup);
+  EXPECT_FALSE(due);
+  EXPECT_TRUE(board.ReadDataHistory<HeadToBMessage>("behavior", TimePoint{}).empty());
+  EXPECT_EQ(board.PendingSignals("behavior", "HeadToBMessage"), 0U);
+  EXPECT_EQ(board.Name(), name);
+  for (auto& place : storage) std::launder(reinterpret_cast<Blackboard*>(place))->~Blackboard();
+}
+
+TEST_F(Messaging, ABlackboardWithALongNameKeepsIt) {
+  const std::string name = "Node_WaitForTheKickOffOfTheOtherTeam";
+  Blackboard board(hub, name);
+  EXPECT_EQ(board.Name(), name);
+  Blackboard unnamed(hub);
+  EXPECT_EQ(unnamed.Name(), "");
+  board.PublishMessage("behavior", Kind::State, Head(3));
+  EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), 3);
+  EXPECT_EQ(board.Name(), name);
+}
+
+TEST_F(Messaging, ThreadsThatUseAFreshBlackboardAtOnceShareWhatTheyMake) {
+  // What a blackboard holds is made by its first use; threads that come at once must all end up
+  // in the same contents (ThreadSanitizer checks the making).
+  for (int round = 0; round < 20; ++round) {
+    Blackboard board(hub);
+    constexpr int kThreads = 4;
+    std::atomic<int> ready{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t) {
+      threads.emplace_back([&, t] {
+        ++ready;
+        while (ready.load() < kThreads) {
+        }
+        switch (t) {
+          case 0: board.Subscribe("behavior"); break;
+          case 1: board.PublishMessage("motion", Kind::Signal, Head(1)); break;
+          case 2: board.ScheduleWakeup(clock.Now()); break;
+          default: {
+            kse::messaging::Reader<HeadToBMessage> reader(board, "motion");
+            (void)reader.ReadSignal();  // the publish's signal, or none yet
+          }
+        }
+      });
+    }
+    for (auto& thread : threads) thread.join();
+    EXPECT_TRUE(board.IsSubscribed("behavior"));
+    EXPECT_EQ(hub.SubscriberCount("behavior"), 1U);
+    EXPECT_LE(board.PendingSignals("motion", "HeadToBMessage"), 1U);
+    EXPECT_TRUE(board.TakeDueWakeups(clock.Now()));
+    hub.Publish("behavior", Kind::State, Head(round));
+    board.ProcessMessages();
+    EXPECT_EQ(board.ReadState<HeadToBMessage>("behavior")->ballfound(), round);
+  }
+}
+
+TEST(Recycled, GivesAMessageBackOnlyOnceNobodyElseHoldsIt) {
+  kse::messaging::Recycled<HeadToBMessage> messages(8);
+  HeadToBMessage& first = messages.Next();
+  first.set_ballfound(1);
+  std::shared_ptr<const HeadToBMessage> kept = messages.Last();  // a reader keeps it
+  HeadToBMessage& second = messages.Next();
+  EXPECT_NE(&second, &first) << "a message someone holds is not written again";
+  second.set_ballfound(2);
+  kept.reset();
+  HeadToBMessage& third = messages.Next();
+  EXPECT_EQ(&third, &first) << "the oldest, let go of, is used again";
+  EXPECT_EQ(third.ballfound(), 1) << "as it was";
+  EXPECT_EQ(messages.Last().get(), &first);
+  EXPECT_EQ(messages.Size(), 2U);
+}
+
+TEST(Recycled, LeavesTheOldestToItsHoldersAtTheLimit) {
+  kse::messaging::Recycled<HeadToBMessage> messages(3);
+  std::vector<std::shared_ptr<const HeadToBMessage>> held;
+  for (int i = 0; i < 10; ++i) {
+    messages.Next().set_ballfound(i);
+    held.push_back(messages.Last());
+  }
+  EXPECT_EQ(messages.Size(), 3U) << "no more than the limit out at a time";
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(held[static_cast<std::size_t>(i)]->ballfound(), i) << "held messages unchanged";
+  held.clear();
+  // the three it kept are free again: used in turn, oldest first
+  HeadToBMessage* seen[3];
+  for (auto& message : seen) message = &messages.Next();
+  EXPECT_EQ(seen[0]->ballfound(), 7);
+  EXPECT_EQ(seen[1]->ballfound(), 8);
+  EXPECT_EQ(seen[2]->ballfound(), 9);
+  EXPECT_EQ(messages.Size(), 3U);
 }
 
 }  // namespace

@@ -1,75 +1,20 @@
 #include <kse/robot/Robot.h>
 
-#include <atomic>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <kse/messages/all.h>
+#include <kse/messaging/Recycled.h>
 
 namespace kse::robot {
 
 using messaging::Kind;
 
-namespace {
-
-// The messages of one kind a robot publishes, oldest first, in a ring that keeps its storage.
-// The oldest is used again once the robot's is the only reference left: the blackboards keep
-// the last State message (and a Data history of 100 entries), then let it go. A message someone
-// keeps is left to them.
-template <class T>
-class Recycled {
-public:
-	explicit Recycled(std::size_t keep) : ring_(keep) {}
-
-	/**
-	 * A message to publish next: the oldest one when it is free again, as it was (the caller
-	 * sets every field it ever sets, or clears it), else a new one.
-	 */
-	T& Next() {
-		if (size_ > 0 && ring_[head_].use_count() == 1) {
-			// use_count() is a relaxed load: the fence orders whatever the last other owner did
-			// with the message before it let go (a release, in the count) before our writes.
-			// (ThreadSanitizer does not model fences and warns about them; the owners a robot's
-			// messages have are on its own thread, its activities running inline.)
-#ifndef __SANITIZE_THREAD__
-			std::atomic_thread_fence(std::memory_order_acquire);
-#endif
-			std::shared_ptr<T> oldest = std::move(ring_[head_]);
-			head_ = Index(1);
-			ring_[Index(size_ - 1)] = std::move(oldest);  // the newest now
-		} else {
-			if (size_ == ring_.size()) {
-				ring_[head_].reset();  // the oldest stays with whoever holds it
-				head_ = Index(1);
-				--size_;
-			}
-			ring_[Index(size_)] = std::make_shared<T>();
-			++size_;
-		}
-		return *ring_[Index(size_ - 1)];
-	}
-
-	/** The message Next() gave, to publish. */
-	const std::shared_ptr<T>& Last() const { return ring_[Index(size_ - 1)]; }
-
-private:
-	std::size_t Index(std::size_t i) const {  // i < the capacity
-		const std::size_t at = head_ + i;
-		return at < ring_.size() ? at : at - ring_.size();
-	}
-
-	std::vector<std::shared_ptr<T>> ring_;
-	std::size_t head_ = 0;  // the oldest
-	std::size_t size_ = 0;
-};
-
-}  // namespace
-
 struct Robot::Recycling {
 	// A Data history keeps the last 100 WorldInfo messages (and the inbox one more).
-	Recycled<WorldInfo> world{messaging::Blackboard::kDataHistoryLimit + 8};
+	messaging::Recycled<WorldInfo> world{messaging::Blackboard::kDataHistoryLimit + 8};
 	Perception last;  // what the last State messages said
 	bool published_once = false;
 	// the motion commands, read every cycle: their keys looked up once

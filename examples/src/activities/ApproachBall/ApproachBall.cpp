@@ -14,19 +14,19 @@ constexpr float kKickX = 0.122f;
 constexpr float kKickY = 0.03f;
 }  // namespace
 
-void ApproachBall::UserInit() { examples::Subscribe(*_blk); }
+void ApproachBall::UserInit() { _io.Bind(*_blk); }
 
 int ApproachBall::Execute() {
-	const auto world = examples::World::Read(*_blk);
+	const auto world = _io.Read();
 	if (!world.BallSeen()) {
-		examples::Stop(*_blk);
+		_io.Stop();
 		return 0;
 	}
 	if (examples::IsGoalkeeper(world)) {
 		const auto crossing = examples::ShotCrossing(world);
 		const int dive = crossing ? examples::DiveSide(*crossing) : 0;
 		if (dive != 0) {
-			examples::Action(*_blk, dive > 0 ? "goalieLeft" : "goalieRight");
+			_io.Action(dive > 0 ? "goalieLeft" : "goalieRight");
 			return 0;
 		}
 	}
@@ -42,10 +42,10 @@ int ApproachBall::Execute() {
 	const bool near = world.BallDistance() < 0.5f && inFront;
 	const float turn = near && world.Localised() ? 0.8f * goal : 1.2f * bearing;
 	if (std::fabs(bearing) > 1.2f) {
-		examples::Walk(*_blk, -0.4f, 0.0f, turn);
+		_io.Walk(-0.4f, 0.0f, turn);
 	} else {
-		examples::Walk(*_blk, 2.5f * ex, 3.0f * ey, turn);
+		_io.Walk(2.5f * ex, 3.0f * ey, turn);
 	}
-	examples::TrackBall(*_blk, world);
+	_io.TrackBall(world);
 	return 0;
 }

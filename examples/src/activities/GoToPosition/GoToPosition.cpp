@@ -8,14 +8,14 @@ namespace {
 const statechart_engine::ActivityRegistrar<GoToPosition> registrar("GoToPosition");
 }
 
-void GoToPosition::UserInit() { examples::Subscribe(*_blk); }
+void GoToPosition::UserInit() { _io.Bind(*_blk); }
 
 int GoToPosition::Execute() {
-	const auto world = examples::World::Read(*_blk);
+	const auto world = _io.Read();
 	if (world.position) {
-		examples::WalkToFieldPose(*_blk, world, world.position->posx(), world.position->posy(), world.position->theta());
+		_io.WalkToFieldPose(world, world.position->posx(), world.position->posy(), world.position->theta());
 	} else {
-		examples::Stop(*_blk);
+		_io.Stop();
 	}
 	return 0;
 }

@@ -12,13 +12,13 @@ const statechart_engine::ActivityRegistrar<Guard> registrar("Guard");
 constexpr float kDistanceFromGoal = 1.5f;
 }  // namespace
 
-void Guard::UserInit() { examples::Subscribe(*_blk); }
+void Guard::UserInit() { _io.Bind(*_blk); }
 
 int Guard::Execute() {
-	const auto world = examples::World::Read(*_blk);
-	examples::TrackBall(*_blk, world);
+	const auto world = _io.Read();
+	_io.TrackBall(world);
 	if (!world.Localised()) {
-		examples::Stop(*_blk);
+		_io.Stop();
 		return 0;
 	}
 	const auto& me = world.info->myposition();
@@ -34,6 +34,6 @@ int Guard::Execute() {
 	const float length = std::max(0.1f, std::hypot(dx, dy));
 	const float x = examples::kOwnGoalX + kDistanceFromGoal * dx / length;
 	const float y = kDistanceFromGoal * dy / length;
-	examples::WalkToFieldPose(*_blk, world, x, y, std::atan2(dy, dx));
+	_io.WalkToFieldPose(world, x, y, std::atan2(dy, dx));
 	return 0;
 }

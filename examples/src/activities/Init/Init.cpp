@@ -8,10 +8,10 @@ namespace {
 const statechart_engine::ActivityRegistrar<Init> registrar("Init");
 }
 
-void Init::UserInit() { examples::Subscribe(*_blk); }
+void Init::UserInit() { _io.Bind(*_blk); }
 
 int Init::Execute() {
-	examples::Action(*_blk, "InitPose");
-	examples::Head(*_blk, 0.0f, 0.3f);
+	_io.Action("InitPose");
+	_io.Head(0.0f, 0.3f);
 	return 0;
 }

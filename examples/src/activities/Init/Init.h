@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <common/RobotIO.h>
 #include <statechart_engine/Interfaces.h>
 
 /** The activity Init of the example behaviours (see Init.cpp). */
@@ -11,4 +12,6 @@ public:
 	int Execute() override;
 	std::string GetName() override { return "Init"; }
 
+private:
+	examples::RobotIO _io;
 };

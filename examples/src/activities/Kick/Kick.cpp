@@ -12,16 +12,16 @@ const statechart_engine::ActivityRegistrar<Kick> registrar("Kick");
 constexpr float kSideKickBearing = 0.9f;  // about 50 degrees
 }  // namespace
 
-void Kick::UserInit() { examples::Subscribe(*_blk); }
+void Kick::UserInit() { _io.Bind(*_blk); }
 
 int Kick::Execute() {
-	const auto world = examples::World::Read(*_blk);
+	const auto world = _io.Read();
 	const float goal = world.BearingTo(examples::kOpponentGoalX, 0.0f);
 	const bool leftFoot = !world.BallSeen() || world.TheBall().relativey() >= 0;
 	if (std::fabs(goal) > kSideKickBearing) {
-		examples::Action(*_blk, goal > 0 ? "KickSideLeft" : "KickSideRight");
+		_io.Action(goal > 0 ? "KickSideLeft" : "KickSideRight");
 	} else {
-		examples::Action(*_blk, leftFoot ? "KickForwardLeft" : "KickForwardRight");
+		_io.Action(leftFoot ? "KickForwardLeft" : "KickForwardRight");
 	}
 	return 0;
 }

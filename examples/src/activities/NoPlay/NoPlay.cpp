@@ -8,15 +8,15 @@ namespace {
 const statechart_engine::ActivityRegistrar<NoPlay> registrar("NoPlay");
 }
 
-void NoPlay::UserInit() { examples::Subscribe(*_blk); }
+void NoPlay::UserInit() { _io.Bind(*_blk); }
 
 int NoPlay::Execute() {
-	const auto world = examples::World::Read(*_blk);
+	const auto world = _io.Read();
 	if (world.PlayerState() == PLAYER_READY && world.position) {
-		examples::WalkToFieldPose(*_blk, world, world.position->posx(), world.position->posy(), world.position->theta());
+		_io.WalkToFieldPose(world, world.position->posx(), world.position->posy(), world.position->theta());
 	} else {
-		examples::Stop(*_blk);
+		_io.Stop();
 	}
-	examples::TrackBall(*_blk, world);
+	_io.TrackBall(world);
 	return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <common/RobotIO.h>
 #include <statechart_engine/Interfaces.h>
 
 /** The activity NoPlay of the example behaviours (see NoPlay.cpp). */
@@ -11,4 +12,6 @@ public:
 	int Execute() override;
 	std::string GetName() override { return "NoPlay"; }
 
+private:
+	examples::RobotIO _io;
 };

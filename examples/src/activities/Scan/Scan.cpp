@@ -11,17 +11,17 @@ constexpr float kSweep[] = {0.0f, 0.9f, 1.6f, 0.9f, 0.0f, -0.9f, -1.6f, -0.9f};
 constexpr int kSweepSteps = sizeof(kSweep) / sizeof(kSweep[0]);
 }  // namespace
 
-void Scan::UserInit() { examples::Subscribe(*_blk); }
+void Scan::UserInit() { _io.Bind(*_blk); }
 
 int Scan::Execute() {
-	const auto world = examples::World::Read(*_blk);
+	const auto world = _io.Read();
 	if (world.BallSeen()) {
-		examples::TrackBall(*_blk, world);
-		examples::Walk(*_blk, 0, 0, 0.5f * world.BallBearing());
+		_io.TrackBall(world);
+		_io.Walk(0, 0, 0.5f * world.BallBearing());
 		return 0;
 	}
 	const int step = _step++ % (2 * kSweepSteps);
-	examples::Head(*_blk, kSweep[step % kSweepSteps], 0.4f);
-	examples::Walk(*_blk, 0, 0, step >= kSweepSteps ? 0.6f : 0.0f);
+	_io.Head(kSweep[step % kSweepSteps], 0.4f);
+	_io.Walk(0, 0, step >= kSweepSteps ? 0.6f : 0.0f);
 	return 0;
 }

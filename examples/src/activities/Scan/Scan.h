@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <common/RobotIO.h>
 #include <statechart_engine/Interfaces.h>
 
 /** The activity Scan of the example behaviours (see Scan.cpp). */
@@ -12,5 +13,6 @@ public:
 	std::string GetName() override { return "Scan"; }
 
 private:
+	examples::RobotIO _io;
 	int _step = 0;
 };

@@ -8,11 +8,11 @@ namespace {
 const statechart_engine::ActivityRegistrar<SpecialAction> registrar("SpecialAction");
 }
 
-void SpecialAction::UserInit() { examples::Subscribe(*_blk); }
+void SpecialAction::UserInit() { _io.Bind(*_blk); }
 
 int SpecialAction::Execute() {
 	const auto fall = _blk->ReadState<FallMessage>("behavior");
-	if (fall && fall->fall() != 0) examples::Action(*_blk, fall->fall() > 0 ? "goalieLeft" : "goalieRight");
+	if (fall && fall->fall() != 0) _io.Action(fall->fall() > 0 ? "goalieLeft" : "goalieRight");
 	FallMessage reset;
 	reset.set_fall(0);
 	_blk->Publish("behavior", kse::messaging::Kind::State, reset);

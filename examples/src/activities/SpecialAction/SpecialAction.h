@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <common/RobotIO.h>
 #include <statechart_engine/Interfaces.h>
 
 /** The activity SpecialAction of the example behaviours (see SpecialAction.cpp). */
@@ -11,4 +12,6 @@ public:
 	int Execute() override;
 	std::string GetName() override { return "SpecialAction"; }
 
+private:
+	examples::RobotIO _io;
 };

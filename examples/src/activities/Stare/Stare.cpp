@@ -10,12 +10,12 @@ namespace {
 const statechart_engine::ActivityRegistrar<Stare> registrar("Stare");
 }  // namespace
 
-void Stare::UserInit() { examples::Subscribe(*_blk); }
+void Stare::UserInit() { _io.Bind(*_blk); }
 
 int Stare::Execute() {
-	const auto world = examples::World::Read(*_blk);
-	examples::Stop(*_blk);
-	examples::TrackBall(*_blk, world);
+	const auto world = _io.Read();
+	_io.Stop();
+	_io.TrackBall(world);
 	if (!world.BallSeen()) return 0;
 	FallMessage fall;
 	const auto crossing = examples::ShotCrossing(world);

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <common/RobotIO.h>
 #include <statechart_engine/Interfaces.h>
 
 /** The activity Stare of the example behaviours (see Stare.cpp). */
@@ -12,5 +13,6 @@ public:
 	std::string GetName() override { return "Stare"; }
 
 private:
+	examples::RobotIO _io;
 	float _lastDistance = -1.0f;
 };

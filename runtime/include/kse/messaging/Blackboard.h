@@ -44,6 +44,10 @@ struct Stamped {
 ///
 /// A blackboard also keeps the wake-up times its TimeoutActions asked for, so the engine that
 /// owns it knows when to re-evaluate (see statechart_engine::SetTimeout).
+///
+/// Every statechart has one and every AND region another, and most never hold a message: a
+/// blackboard is 32 bytes (its hub, its name, a pointer; a name over 15 characters is copied to
+/// the heap) until its first subscription, publish, bound reader or wake-up makes what it holds.
 class Blackboard {
  public:
   using MessagePtr = std::shared_ptr<const google::protobuf::Message>;
@@ -53,7 +57,7 @@ class Blackboard {
   /// Unread signals kept per Signal key; when full the oldest unread one is dropped.
   static constexpr std::size_t kSignalQueueLimit = 1000;
 
-  explicit Blackboard(MessageHub& hub, std::string name = {});
+  explicit Blackboard(MessageHub& hub, const std::string& name = {});
   ~Blackboard();
   Blackboard(const Blackboard&) = delete;
   Blackboard& operator=(const Blackboard&) = delete;
@@ -152,9 +156,9 @@ class Blackboard {
   /// Number of unread signals of that topic and type.
   std::size_t PendingSignals(const std::string& topic, const std::string& type_name) const;
 
-  MessageHub& Hub() const noexcept { return hub_; }
-  const std::string& Name() const noexcept { return name_; }
-  TimePoint Now() const { return hub_.GetClock().Now(); }
+  MessageHub& Hub() const noexcept { return *hub_; }
+  std::string Name() const;
+  TimePoint Now() const { return hub_->GetClock().Now(); }
 
   template <class T>
   static const std::string& TypeName() {
@@ -185,46 +189,44 @@ class Blackboard {
   void PublishNamed(const std::string& topic, const std::string& type_name, Kind kind, MessagePtr message);
 
   struct Slot;
+  // What the blackboard holds: topics, messages, the inbox, wake-ups, and the lock that guards
+  // them. Made by the first subscription, publish, bound reader or wake-up.
+  struct Contents;
   // What a Reader does: its key's slot, made now if no message has come yet (a slot, once
   // made, lives as long as the blackboard), then reads there without looking the key up.
   Slot* SlotOf(const std::string& topic, const std::string& type_name);
-  void ReadStateAt(Slot* slot, Sink sink, void* out) const;
-  void ReadSignalAt(Slot* slot, Sink sink, void* out);
-  void ReadDataAt(Slot* slot, Sink sink, void* out) const;
+  static void ReadStateAt(Contents* contents, Slot* slot, Sink sink, void* out);
+  static void ReadSignalAt(Contents* contents, Slot* slot, Sink sink, void* out);
+  static void ReadDataAt(Contents* contents, Slot* slot, Sink sink, void* out);
 
   // What the hub calls for each subscriber; Deliver() answers the key's slot, which the hub
   // keeps to deliver the next message of that topic and type with DeliverAt() (no lookup).
   Slot* Deliver(const std::string& topic, const std::string& type_name, Kind kind,
                 const MessagePtr& message, TimePoint time);
-  void DeliverAt(Slot* slot, Kind kind, const MessagePtr& message, TimePoint time);
+  static void DeliverAt(Slot* slot, Kind kind, const MessagePtr& message, TimePoint time);
 
   struct Entry {
     MessagePtr message;
     TimePoint time;
   };
-  // What the blackboard holds: topics, messages, the inbox, wake-ups. Most blackboards of a
-  // process (a statechart's root, its regions) never hold a message, so it is made by the
-  // first subscription, publish or wake-up, not with the blackboard.
-  struct Contents;
-  // Callers hold mutex_.
+  // The contents, made now if they are not yet (by whichever thread comes first).
   Contents& Made();
-  Slot* Find(const std::string& topic, const std::string& type_name) const;
-  Slot& SlotFor(const std::string& topic, const std::string& type_name);
-  void Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time);
-  void Queue(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time);
+  // The contents if made, else null: what a blackboard without them answers needs none.
+  Contents* Peek() const noexcept { return contents_.load(std::memory_order_acquire); }
+  // Callers hold the contents' lock.
+  static Slot* Find(const Contents& contents, const std::string& topic, const std::string& type_name);
+  static Slot& SlotFor(Contents& contents, const std::string& topic, const std::string& type_name);
+  static void Apply(Slot& slot, Kind kind, const MessagePtr& message, TimePoint time);
+  static void Queue(Contents& contents, Slot& slot, Kind kind, const MessagePtr& message, TimePoint time);
 
-  MessageHub& hub_;
-  const std::string name_;
-
-  mutable SpinLock mutex_;
-  std::unique_ptr<Contents> contents_;  // null until needed
-  // The earliest wake-up (ticks of the clock's epoch; the largest value when none), written
-  // under mutex_: the engine asks TakeDueWakeups() every cycle, nearly always too early.
-  std::atomic<Duration::rep> next_wakeup_{kNoWakeup};
-  // Contents::inbox_size as of the last change (written under mutex_): PendingMessages(), which
-  // a robot asks every cycle of its motion blackboard, reads it without the lock.
-  std::atomic<std::size_t> inbox_size_{0};
-  static constexpr Duration::rep kNoWakeup = std::numeric_limits<Duration::rep>::max();
+  MessageHub* hub_;
+  std::atomic<Contents*> contents_{nullptr};  // owned; set once, never replaced
+  // The name, in place when it fits (chart names and most state names do); a longer one is
+  // copied to the heap, its address and length kept in the same bytes.
+  static constexpr std::size_t kShortName = 15;
+  static constexpr unsigned char kLongName = 0xFF;
+  char name_[kShortName] = {};
+  unsigned char name_size_ = 0;  // kLongName: name_ holds the copy's address and length
 };
 
 /// What an unbound Reader throws (std::logic_error naming the type).
@@ -244,36 +246,37 @@ class Reader {
 
   void Bind(Blackboard& blackboard, const std::string& topic) {
     slot_ = blackboard.SlotOf(topic, Blackboard::TypeName<T>());
-    blackboard_ = &blackboard;
+    contents_ = blackboard.Peek();  // made by SlotOf
   }
-  bool IsBound() const noexcept { return blackboard_ != nullptr; }
+  bool IsBound() const noexcept { return slot_ != nullptr; }
 
   /// As Blackboard::ReadState<T>(topic).
   std::shared_ptr<const T> ReadState() const {
     std::shared_ptr<const T> out;
-    Bound().ReadStateAt(slot_, &Blackboard::Take<T>, &out);
+    Blackboard::ReadStateAt(contents_, Bound(), &Blackboard::Take<T>, &out);
     return out;
   }
   /// As Blackboard::ReadSignal<T>(topic): consumes the signal.
   std::shared_ptr<const T> ReadSignal() const {
     std::shared_ptr<const T> out;
-    Bound().ReadSignalAt(slot_, &Blackboard::Take<T>, &out);
+    Blackboard::ReadSignalAt(contents_, Bound(), &Blackboard::Take<T>, &out);
     return out;
   }
   /// As Blackboard::ReadData<T>(topic).
   std::shared_ptr<const T> ReadData() const {
     std::shared_ptr<const T> out;
-    Bound().ReadDataAt(slot_, &Blackboard::Take<T>, &out);
+    Blackboard::ReadDataAt(contents_, Bound(), &Blackboard::Take<T>, &out);
     return out;
   }
 
  private:
-  Blackboard& Bound() const {
-    if (blackboard_ == nullptr) ThrowUnbound(Blackboard::TypeName<T>());
-    return *blackboard_;
+  Blackboard::Slot* Bound() const {
+    if (slot_ == nullptr) ThrowUnbound(Blackboard::TypeName<T>());
+    return slot_;
   }
 
-  Blackboard* blackboard_ = nullptr;
+  // Straight to the key's slot and the lock that guards it: no step through the blackboard.
+  Blackboard::Contents* contents_ = nullptr;
   Blackboard::Slot* slot_ = nullptr;
 };
 

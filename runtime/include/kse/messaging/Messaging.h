@@ -6,5 +6,6 @@
 #include "kse/messaging/Clock.h"
 #include "kse/messaging/Kind.h"
 #include "kse/messaging/MessageHub.h"
+#include "kse/messaging/Recycled.h"
 
 #endif
