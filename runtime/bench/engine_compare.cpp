@@ -30,7 +30,9 @@
 // Memory: bytes per chart instance, the object itself plus what it holds on the heap once it
 // is ready to step (activated, in its first state), as malloc counts it (mallinfo2, chunk
 // overhead included) over 100 instances; the number of operator new blocks beside it. The
-// engine's MessageHub is shared by every chart of a process (one per robot) and not counted.
+// engine's MessageHub is shared by every chart of a process (one per robot) and not counted;
+// nor is a chart's Definition, built once and shared by its instances as Boost's and Qt's
+// compiled charts share their code and tables (printed on a line of its own).
 //
 //   kse_engine_compare [--rounds N] [--round-ms M] [--only NAME]
 // --only times one implementation (e.g. `--only engine`, for a profiler) and skips the memory.
@@ -172,50 +174,81 @@ se::Options InlineOptions() {
   return options;
 }
 
+// Each chart's structure is one Definition shared by all its instances, as generated code
+// builds it; an instance holds its configuration and makes its guards and activities.
+std::shared_ptr<const se::Definition> MakeChainDefinition() {
+  {
+    auto definition = std::make_shared<se::Definition>("Chain");
+    se::OrState* root = definition->Root();
+    auto* start = definition->Add<se::StartState>("Chain_START", root);
+    std::vector<se::BasicState*> nodes;
+    for (int i = 0; i < kChainStates; ++i) {
+      nodes.push_back(definition->Add<se::BasicState>("N" + std::to_string(i), root,
+                                                      se::Make<EngineActivity>(i)));
+    }
+    definition->AddTransition(start, nodes[0]);
+    for (int i = 0; i < kChainStates; ++i) {
+      definition->AddTransition(nodes[static_cast<std::size_t>(i)],
+                                nodes[static_cast<std::size_t>((i + 1) % kChainStates)],
+                                se::Make<EngineGuard>(i));
+    }
+    definition->Complete();
+    return definition;
+  }
+}
+
+std::shared_ptr<const se::Definition> MakeNestedDefinition() {
+  {
+    auto definition = std::make_shared<se::Definition>("Nested");
+    se::OrState* root = definition->Root();
+    auto* start = definition->Add<se::StartState>("Nested_START", root);
+    std::vector<se::OrState*> composites;
+    for (int c = 0; c < kComposites; ++c) {
+      const std::string name = "C" + std::to_string(c);
+      auto* composite = definition->Add<se::OrState>(name, root);
+      composites.push_back(composite);
+      auto* inner_start = definition->Add<se::StartState>(name + "_START", composite);
+      std::vector<se::State*> path{inner_start};
+      for (int k = 0; k < kLeaves; ++k) {
+        path.push_back(definition->Add<se::BasicState>(name + "_N" + std::to_string(k), composite,
+                                                       se::Make<EngineActivity>(c * 10 + k)));
+      }
+      path.push_back(definition->Add<se::EndState>(name + "_END", composite));
+      definition->AddTransition(path[0], path[1]);
+      for (std::size_t k = 1; k + 1 < path.size(); ++k) {
+        definition->AddTransition(path[k], path[k + 1],
+                                  se::Make<EngineGuard>(c * 10 + static_cast<int>(k)));
+      }
+    }
+    definition->AddTransition(start, composites[0]);
+    for (int c = 0; c < kComposites; ++c) {
+      definition->AddTransition(composites[static_cast<std::size_t>(c)],
+                                composites[static_cast<std::size_t>((c + 1) % kComposites)],
+                                se::Make<EngineGuard>(100 + c));
+    }
+    definition->Complete();
+    return definition;
+  }
+}
+
+const std::shared_ptr<const se::Definition>& ChainDefinition() {
+  static const std::shared_ptr<const se::Definition> shared = MakeChainDefinition();
+  return shared;
+}
+
+const std::shared_ptr<const se::Definition>& NestedDefinition() {
+  static const std::shared_ptr<const se::Definition> shared = MakeNestedDefinition();
+  return shared;
+}
+
 std::unique_ptr<se::Statechart> EngineChain(kse::messaging::MessageHub& hub) {
-  auto chart = std::make_unique<se::Statechart>("Chain", hub, InlineOptions());
-  auto* start = chart->Add<se::StartState>("Chain_START", chart.get());
-  std::vector<se::BasicState*> nodes;
-  for (int i = 0; i < kChainStates; ++i) {
-    nodes.push_back(chart->Add<se::BasicState>("N" + std::to_string(i), chart.get(),
-                                               std::make_unique<EngineActivity>(i)));
-  }
-  chart->AddTransition(start, nodes[0]);
-  for (int i = 0; i < kChainStates; ++i) {
-    chart->AddTransition(nodes[static_cast<std::size_t>(i)],
-                         nodes[static_cast<std::size_t>((i + 1) % kChainStates)],
-                         std::make_unique<EngineGuard>(i));
-  }
+  auto chart = std::make_unique<se::Statechart>(ChainDefinition(), hub, InlineOptions());
   chart->Activate();
   return chart;
 }
 
 std::unique_ptr<se::Statechart> EngineNested(kse::messaging::MessageHub& hub) {
-  auto chart = std::make_unique<se::Statechart>("Nested", hub, InlineOptions());
-  auto* start = chart->Add<se::StartState>("Nested_START", chart.get());
-  std::vector<se::OrState*> composites;
-  for (int c = 0; c < kComposites; ++c) {
-    const std::string name = "C" + std::to_string(c);
-    auto* composite = chart->Add<se::OrState>(name, chart.get());
-    composites.push_back(composite);
-    auto* inner_start = chart->Add<se::StartState>(name + "_START", composite);
-    std::vector<se::State*> path{inner_start};
-    for (int k = 0; k < kLeaves; ++k) {
-      path.push_back(chart->Add<se::BasicState>(name + "_N" + std::to_string(k), composite,
-                                                std::make_unique<EngineActivity>(c * 10 + k)));
-    }
-    path.push_back(chart->Add<se::EndState>(name + "_END", composite));
-    chart->AddTransition(path[0], path[1]);
-    for (std::size_t k = 1; k + 1 < path.size(); ++k) {
-      chart->AddTransition(path[k], path[k + 1], std::make_unique<EngineGuard>(c * 10 + static_cast<int>(k)));
-    }
-  }
-  chart->AddTransition(start, composites[0]);
-  for (int c = 0; c < kComposites; ++c) {
-    chart->AddTransition(composites[static_cast<std::size_t>(c)],
-                         composites[static_cast<std::size_t>((c + 1) % kComposites)],
-                         std::make_unique<EngineGuard>(100 + c));
-  }
+  auto chart = std::make_unique<se::Statechart>(NestedDefinition(), hub, InlineOptions());
   chart->Activate();
   return chart;
 }
@@ -690,5 +723,13 @@ int main(int argc, char** argv) {
   line("engine", engine_chain_memory, engine_nested_memory);
   line("Boost.Statechart", boost_chain_memory, boost_nested_memory);
   line("Qt SCXML", qt_chain_memory, qt_nested_memory);
+
+  // Once per chart, not per instance: what every engine instance above shares.
+  std::vector<std::shared_ptr<const se::Definition>> definitions;
+  const Memory chain_definition = Measure(0, [&] { definitions.push_back(MakeChainDefinition()); });
+  const Memory nested_definition = Measure(0, [&] { definitions.push_back(MakeNestedDefinition()); });
+  std::printf("  %-18s %9.0f B (%4.0f) %15.0f B (%4.0f)   once per chart, shared by its instances\n",
+              "engine definition", chain_definition.bytes, chain_definition.allocations,
+              nested_definition.bytes, nested_definition.allocations);
   return 0;
 }

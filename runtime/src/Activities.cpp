@@ -24,20 +24,21 @@ thread_local std::uint64_t current_loop_generation = 0;
 // ---------------------------------------------------------------------------------------------
 
 void EngineCore::Launch(BasicState* state) {
-  if (!state->activity_) {
+  IActivity* activity = ActivityOf(state);
+  if (activity == nullptr) {
     return;
   }
   // Only a step (under the engine's lock) launches: a plain increment, no locked instruction.
-  state->launches_.store(state->launches_.load(std::memory_order_relaxed) + 1,
-                         std::memory_order_relaxed);
+  std::atomic<std::uint32_t>& launches = launches_[state->slot_];
+  launches.store(launches.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
   if (!pool_) {
-    RunActivity(state);
+    RunActivity(state, activity);
     UnwindIfGivenUp();
-    if (options_.inline_activities_last_until_next_run && current_loop_core != this) {
+    if (inline_runs_last_ && current_loop_core != this) {
       // The run is over, but the region behaves as if it went on until the next call, as a
       // worker's run would: the region waits, the rest of the chart steps on.
       // Not among running_activities_: nothing runs, nothing is to be waited for.
-      state->region_->running_.fetch_add(1, std::memory_order_acq_rel);
+      RunningOf(state).fetch_add(1, std::memory_order_acq_rel);
       inline_runs_.push_back(state);
       run_begins_work_.store(true, std::memory_order_release);
     }
@@ -45,28 +46,28 @@ void EngineCore::Launch(BasicState* state) {
   }
   {
     std::lock_guard<std::mutex> lock(wake_mutex_);
-    state->region_->running_.fetch_add(1, std::memory_order_acq_rel);
+    RunningOf(state).fetch_add(1, std::memory_order_acq_rel);
     running_activities_.fetch_add(1, std::memory_order_acq_rel);
-    if (state->running_.load(std::memory_order_acquire)) {
+    if (activity_runs_[state->slot_].load(std::memory_order_acquire)) {
       // Entered again (after an outer transition left it) while the last run goes on: one
       // IActivity object never runs twice at once, so the worker runs it again afterwards.
-      ++state->relaunches_;
+      ++relaunches_[state->slot_];
       return;
     }
-    state->running_.store(true, std::memory_order_release);
+    activity_runs_[state->slot_].store(true, std::memory_order_release);
   }
-  pool_->Post([this, state] {
+  pool_->Post([this, state, activity] {
     do {
-      RunActivity(state);
+      RunActivity(state, activity);
     } while (FinishActivity(state));
   });
 }
 
-void EngineCore::RunActivity(BasicState* state) {
+void EngineCore::RunActivity(BasicState* state, IActivity* activity) {
   // Nothing but the call on the way that does not throw: the failure is told out of line.
   try {
     WatchedCall watched(SlotOf(state), CallKind::Activity, state);
-    state->activity_->Execute();
+    activity->Execute();
   } catch (const std::exception& e) {
     ActivityFailed(state, "threw", e.what());
   } catch (...) {
@@ -78,7 +79,7 @@ void EngineCore::ActivityFailed(BasicState* state, const char* failure, const st
   ++activity_failures_;
   std::string name;
   try {
-    name = state->activity_->GetName();
+    name = ActivityOf(state)->GetName();
   } catch (...) {
     name = "?";
   }
@@ -94,13 +95,13 @@ bool EngineCore::FinishActivity(BasicState* state) {
     if (abandoned_.load(std::memory_order_relaxed)) {
       return false;  // the statechart is gone: its region (maybe the root itself) with it
     }
-    state->region_->running_.fetch_sub(1, std::memory_order_acq_rel);
+    RunningOf(state).fetch_sub(1, std::memory_order_acq_rel);
     running_activities_.fetch_sub(1, std::memory_order_acq_rel);
-    if (state->relaunches_ > 0) {
-      --state->relaunches_;
+    if (relaunches_[state->slot_] > 0) {
+      --relaunches_[state->slot_];
       again = true;
     } else {
-      state->running_.store(false, std::memory_order_release);
+      activity_runs_[state->slot_].store(false, std::memory_order_release);
     }
     woken_ = true;
     ++wake_generation_;
@@ -122,9 +123,9 @@ bool EngineCore::TakeWake() {
     woken = woken_.exchange(false, std::memory_order_relaxed);
   }
   const kse::messaging::TimePoint now = hub_.GetClock().Now();
-  for (kse::messaging::Blackboard* board : blackboards_) {
-    woken = board->TakeDueWakeups(now) || woken;
-  }
+  woken = root_blackboard_.TakeDueWakeups(now) || woken;
+  const std::size_t boards = definition_->regions_.size() - 1;
+  for (std::size_t i = 0; i < boards; ++i) woken = boards_[i].TakeDueWakeups(now) || woken;
   return woken;
 }
 
@@ -138,7 +139,7 @@ void EngineCore::BeginRun() {
     if (!unsettled_loop_.empty()) unsettled_loop_.clear();
     if (inline_runs_.empty()) return;
     for (BasicState* state : inline_runs_) {
-      state->region_->running_.fetch_sub(1, std::memory_order_acq_rel);
+      RunningOf(state).fetch_sub(1, std::memory_order_acq_rel);
     }
     inline_runs_.clear();
   }
@@ -243,9 +244,10 @@ void EngineCore::Wake() {
 }
 
 std::optional<kse::messaging::TimePoint> EngineCore::NextWakeup() const {
-  std::optional<kse::messaging::TimePoint> next;
-  for (const kse::messaging::Blackboard* board : blackboards_) {
-    auto wakeup = board->NextWakeup();
+  std::optional<kse::messaging::TimePoint> next = root_blackboard_.NextWakeup();
+  const std::size_t boards = block_ == nullptr ? 0 : definition_->regions_.size() - 1;
+  for (std::size_t i = 0; i < boards; ++i) {
+    auto wakeup = boards_[i].NextWakeup();
     if (wakeup && (!next || *wakeup < *next)) {
       next = wakeup;
     }
@@ -313,8 +315,8 @@ void EngineCore::Stop() {
   }
   if (running_activities_.load(std::memory_order_acquire) > 0) {
     for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) {
-      if (slot_states_[slot]->IsRunning()) {
-        left.push_back(DescribeCall(CallKind::Activity, slot_states_[slot]));
+      if (activity_runs_[slot].load(std::memory_order_acquire)) {
+        left.push_back(DescribeCall(CallKind::Activity, definition_->basic_states_[slot]));
       }
     }
   }
@@ -365,7 +367,7 @@ bool EngineCore::Shutdown() {
   if (pool_) pool_->Close(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
   EngineReport report;
   report.kind = EngineReport::Kind::Abandoned;
-  report.chart = chart_name_;
+  report.chart = Name();
   report.text = "destroyed while " + std::to_string(activities) + " activit" +
                 (activities == 1 ? "y" : "ies") + " and " + std::to_string(threads) +
                 " engine thread" + (threads == 1 ? "" : "s") +
@@ -434,9 +436,19 @@ void EngineCore::Loop(std::uint64_t generation) {
 std::vector<std::string> EngineCore::ActiveStates() const {
   std::lock_guard<EngineLock> lock(engine_lock_);
   std::vector<std::string> names;
-  for (const State* state : states_) {
-    if (state->IsActive()) {
-      names.push_back(state->Name());
+  if (!IsActive(root_)) return names;
+  // Down the active children: only they hold active states, so this is document order.
+  std::vector<const State*> pending{root_};
+  while (!pending.empty()) {
+    const State* state = pending.back();
+    pending.pop_back();
+    names.push_back(state->Name());
+    if (state->kind_ == StateKind::Or) {
+      if (const State* child = ActiveChildOf(state)) pending.push_back(child);
+    } else if (state->kind_ == StateKind::And) {
+      for (auto it = state->children_.rbegin(); it != state->children_.rend(); ++it) {
+        if (ActiveChildOf(*it) != nullptr) pending.push_back(*it);
+      }
     }
   }
   return names;

@@ -26,12 +26,44 @@ namespace statechart_engine::detail {
 
 /// Everything behind Statechart: ownership, the step algorithm, activities, the engine thread.
 class EngineCore {
+ private:
+  // What every step reads, first (a step takes a few of the object's cache lines).
+
+  // Guards the configuration (active flags, active children), the observer and Activate.
+  // Workers never take it.
+  mutable EngineLock engine_lock_;
+  // One block per statechart (Definition::Layout): flags and active children of its states,
+  // its regions' running counts and blackboards, its activities' counts, the parts it made.
+  unsigned char* block_ = nullptr;
+  std::atomic<bool>* activity_runs_ = nullptr;  // by BASIC state: the last run has not ended
+  std::atomic<State*>* active_child_ = nullptr;  // by OR state
+  std::atomic<int>* running_ = nullptr;
+  std::atomic<std::uint32_t>* launches_ = nullptr;
+  std::uint32_t* relaunches_ = nullptr;
+  kse::messaging::Blackboard* boards_ = nullptr;
+  OrState* root_;
+  std::atomic<bool> activated_{false};
+  std::atomic<bool> root_entered_{false};
+  bool inline_runs_last_;  // Options::inline_activities_last_until_next_run
+  // Near a RunUntilStable() bound every segment fired goes into loop_record_ (one test per Fire()).
+  bool recording_loop_ = false;
+  std::unique_ptr<WorkerPool> pool_;
+  std::atomic<std::uint64_t> given_up_generation_{0};  // engine threads up to it unwind after their call
+  CallSlot engine_slot_;  // guards, actions, entry/exit hooks, UserInit, the observer
+  Statechart::Observer observer_;
+  std::atomic<std::size_t> transitions_taken_{0};
+  std::atomic<std::size_t> step_number_{0};
+
+  friend class statechart_engine::Statechart;
+
  public:
-  EngineCore(Statechart& chart, kse::messaging::MessageHub& hub, Options options);
+  /// `own`: the definition when the statechart builds it itself (completed at activation).
+  EngineCore(std::shared_ptr<const Definition> definition, Definition* own,
+             kse::messaging::MessageHub& hub, Options options);
   ~EngineCore();
 
-  void AdoptState(std::unique_ptr<State> state);
-  void AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition);
+  const Definition& GetDefinition() const noexcept { return *definition_; }
+  const std::string& Name() const noexcept { return definition_->Name(); }
 
   void Activate();
   bool Step();
@@ -67,9 +99,49 @@ class EngineCore {
 
   std::vector<std::string> ActiveStates() const;
   std::string UnsettledLoop() const;
-  std::vector<State*> States() const;
-  std::vector<TransitionSegmentBase*> Transitions() const;
   void SetObserver(Statechart::Observer observer);
+
+  // The statechart's own part of a state or transition of its definition (after Activate()).
+  // A state is active when each OR state above it has it (or the state above it) as its active
+  // child, and the root has been entered: the active children are the whole configuration.
+  bool IsActive(const State* state) const noexcept {
+    if (!root_entered_.load(std::memory_order_acquire)) return false;
+    for (const State* s = state; s->parent_ != nullptr; s = s->parent_) {
+      if (s->parent_or_slot_ != 0 && active_child_[s->parent_or_slot_ - 1].load(std::memory_order_relaxed) != s) {
+        return false;
+      }
+    }
+    return true;
+  }
+  State* ActiveChild(const State* state) const noexcept {
+    if (block_ == nullptr || state->kind_ != StateKind::Or) return nullptr;
+    return ActiveChildOf(state);
+  }
+  bool RegionRunning(const OrState* region) const noexcept {
+    return block_ != nullptr &&
+           running_[region->region_slot_].load(std::memory_order_acquire) > 0;
+  }
+  bool ActivityRunning(const BasicState* state) const noexcept {
+    return block_ != nullptr && activity_runs_[state->slot_].load(std::memory_order_acquire);
+  }
+  std::size_t Launches(const BasicState* state) const noexcept {
+    return block_ == nullptr ? 0 : launches_[state->slot_].load(std::memory_order_relaxed);
+  }
+  // These three only once the block is made (MakeBlock).
+  IActivity* ActivityOf(const BasicState* state) const noexcept {
+    return Object(state->activity_, state->activity_at_);
+  }
+  ICondition* ConditionOf(const TransitionSegmentBase* transition) const noexcept {
+    return Object(transition->condition_, transition->condition_at_);
+  }
+  IAction* ActionOf(const TransitionSegmentBase* transition) const noexcept {
+    return Object(transition->action_, transition->action_at_);
+  }
+  bool HasBlock() const noexcept { return block_ != nullptr; }
+  kse::messaging::Blackboard* BoardOf(const OrState* region) const noexcept {
+    if (region->region_slot_ == 0) return &root_blackboard_;
+    return block_ == nullptr ? nullptr : &boards_[region->region_slot_ - 1];
+  }
 
   /// The earliest wake-up time its blackboards hold, if any.
   std::optional<kse::messaging::TimePoint> NextWakeup() const;
@@ -84,17 +156,35 @@ class EngineCore {
   std::atomic<std::size_t> activity_failures_{0};
   std::atomic<std::size_t> guard_failures_{0};
   std::atomic<std::size_t> action_failures_{0};
-  std::atomic<std::size_t> transitions_taken_{0};
-  std::atomic<std::size_t> step_number_{0};
   std::atomic<std::size_t> running_activities_{0};
   std::atomic<std::size_t> overruns_{0};
 
  private:
-  // Structure (Activate)
-  void Prepare();
-  void CollectStates(State* state, std::vector<State*>& out) const;
-  void CheckStructure() const;
-  void ComputeTransition(TransitionSegmentBase& transition);
+  // A statechart's guard, action or activity (after MakeBlock): see Definition::Layout.
+  template <class I>
+  I* Object(const Part<I>& part, std::size_t at) const noexcept {
+    if (at == 0) return nullptr;
+    if ((at & 1U) == 0) return reinterpret_cast<I*>(block_ + at);  // made: the common case
+    if (at == 1) return part.given_object_;
+    return *reinterpret_cast<I* const*>(block_ + (at & ~std::size_t{1}));
+  }
+  bool RegionRunningOf(const State* state) const noexcept {
+    return running_[state->region_slot_].load(std::memory_order_acquire) > 0;
+  }
+  std::atomic<int>& RunningOf(const State* state) noexcept { return running_[state->region_slot_]; }
+  // Written by the engine's thread only (under its lock); atomic for a reader of IsActive().
+  State* ActiveChildOf(const State* or_state) const noexcept {
+    return active_child_[or_state->slot_].load(std::memory_order_relaxed);
+  }
+  void SetActiveChild(std::uint32_t parent_or_slot, State* child) noexcept {
+    if (parent_or_slot != 0) active_child_[parent_or_slot - 1].store(child, std::memory_order_relaxed);
+  }
+
+  // The statechart's own memory (Activate)
+  void MakeBlock();
+  template <class I>
+  void MakePart(const Part<I>& part, std::size_t at, std::vector<std::unique_ptr<I>>& owned);
+  void DestroyBlock() noexcept;
   void CallUserInits();
 
   // Stepping
@@ -117,7 +207,7 @@ class EngineCore {
 
   // Activities
   void Launch(BasicState* state);
-  void RunActivity(BasicState* state);
+  void RunActivity(BasicState* state, IActivity* activity);
   void ActivityFailed(BasicState* state, const char* failure, const std::string& message);
   /// Called on a worker after the activity returned: true when it must run again (its state
   /// was entered again while it ran).
@@ -152,7 +242,7 @@ class EngineCore {
   // Watchdog
   /// An inline activity runs on the engine's thread: its slot, always in the cache.
   CallSlot& SlotOf(const BasicState* state) noexcept {
-    return pool_ ? activity_slots_[state->watch_slot_] : engine_slot_;
+    return pool_ ? activity_slots_[state->slot_] : engine_slot_;
   }
   std::string DescribeCall(CallKind kind, const void* subject) const;
   /// The call running in a slot now: false when none (or calls come and go too fast to say).
@@ -162,31 +252,23 @@ class EngineCore {
   std::int64_t LimitOf(CallKind kind, const void* subject) const noexcept;
   void ApplyActivityLimits();
 
-  Statechart& chart_;
-  const std::string chart_name_;  // for reports after the statechart is gone
-  std::vector<std::unique_ptr<State>> owned_states_;
-  std::vector<std::unique_ptr<TransitionSegmentBase>> owned_transitions_;  // model order
+  // Kept by every statechart made from it (and by the core of one abandoned, for reports).
+  std::shared_ptr<const Definition> definition_;
+  Definition* own_definition_;
+  // Parts given as objects, or created for this statechart, on the heap.
+  std::vector<std::unique_ptr<ICondition>> given_conditions_;
+  std::vector<std::unique_ptr<IAction>> given_actions_;
+  std::vector<std::unique_ptr<IActivity>> given_activities_;
 
-  // Guards the configuration (active flags, active children), the observer and Activate.
-  // Workers never take it.
-  mutable EngineLock engine_lock_;
-  std::vector<State*> states_;                              // document order, after Prepare
-  std::vector<kse::messaging::Blackboard*> blackboards_;    // root + regions
   std::vector<TransitionSegmentBase*> chain_;               // scratch for connector chains
-  std::vector<State*> entry_paths_;  // every transition's entry path, one after the other
-  Statechart::Observer observer_;
-  std::atomic<bool> activated_{false};
   std::vector<BasicState*> inline_runs_;  // inline activities that end at the next run
   // Whether BeginRun() has anything to do (inline_runs_ or unsettled_loop_ not empty): set
   // under engine_lock_, read without it, so that the cycles with nothing to end (most of a
   // robot's) take no lock for it.
   std::atomic<bool> run_begins_work_{false};
-  // Near a RunUntilStable() bound every segment fired goes into loop_record_ (one test per Fire()).
-  bool recording_loop_ = false;
   std::vector<const TransitionSegmentBase*> loop_record_;
   std::string unsettled_loop_;  // under engine_lock_
 
-  std::unique_ptr<WorkerPool> pool_;
 
   // Waking the engine (thread or RunUntilStable) and the activity bookkeeping.
   std::mutex wake_mutex_;
@@ -201,18 +283,14 @@ class EngineCore {
   std::mutex control_mutex_;  // serialises Start/Stop/Shutdown
   std::thread thread_;
   std::atomic<std::uint64_t> loop_generation_{0};  // the engine thread that may run; Stop() retires it
-  std::atomic<std::uint64_t> given_up_generation_{0};  // engine threads up to it unwind after their call
   std::atomic<bool> started_{false};
 
   // Reports and the watchdog
   mutable std::mutex reporter_mutex_;
   std::shared_ptr<const Reporter> reporter_;  // null: standard error
-  CallSlot engine_slot_;  // guards, actions, entry/exit hooks, UserInit, the observer
   std::unique_ptr<CallSlot[]> activity_slots_;  // by activity, only for a worker pool
   std::unique_ptr<std::atomic<std::int64_t>[]> activity_limits_ms_;  // by activity, -1: the statechart's
   std::size_t activity_slot_count_ = 0;
-  std::vector<const BasicState*> slot_states_;  // by slot
-  std::vector<std::string> activity_names_;     // by slot, asked once at Activate
   std::atomic<std::int64_t> watchdog_limit_ms_;
   std::mutex limits_mutex_;
   std::vector<std::pair<std::string, std::chrono::milliseconds>> activity_limits_;

@@ -23,6 +23,29 @@ ActivityFactory& ActivityFactory::Instance() {
   return instance;
 }
 
+Part<IActivity> ActivityFactory::PartNamed(const std::string& name) const {
+  {
+    std::lock_guard<std::mutex> lock(parts_mutex_);
+    auto found = parts_.find(name);
+    if (found != parts_.end()) {
+      Part<IActivity> part;
+      part.maker_ = found->second.maker_;
+      return part;
+    }
+  }
+  if (Contains(name)) {
+    // registered without a registrar: made by its creator, for each statechart
+    return Part<IActivity>::Created([this, name] { return Create(name); });
+  }
+  detail::Warn("unknown activity '" + name + "' (is its registrar linked in?)");
+  return nullptr;
+}
+
+void ActivityFactory::RegisterPart(const std::string& name, Part<IActivity> part) {
+  std::lock_guard<std::mutex> lock(parts_mutex_);
+  parts_[name] = std::move(part);
+}
+
 StatechartFactory& StatechartFactory::Instance() {
   static StatechartFactory instance;
   return instance;

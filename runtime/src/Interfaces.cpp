@@ -103,8 +103,7 @@ void TimeoutAction::UserInit() { InitTimeout(*_blk, topic_); }
 void TimeoutAction::Execute() { SetTimeout(*_blk, topic_, std::chrono::milliseconds(milliseconds_)); }
 
 TransitionSegmentBase::TransitionSegmentBase(State* source, State* target,
-                                             std::unique_ptr<ICondition> condition,
-                                             std::unique_ptr<IAction> action)
+                                             Part<ICondition> condition, Part<IAction> action)
     : source_(source),
       target_(target),
       condition_(std::move(condition)),

@@ -19,24 +19,22 @@ std::string DescribeTransition(const TransitionSegmentBase* transition) {
 
 }  // namespace
 
-EngineCore::EngineCore(Statechart& chart, kse::messaging::MessageHub& hub, Options options)
-    : hub_(hub),
+EngineCore::EngineCore(std::shared_ptr<const Definition> definition, Definition* own,
+                       kse::messaging::MessageHub& hub, Options options)
+    : root_(definition->Root()),
+      inline_runs_last_(options.inline_activities_last_until_next_run),
+      hub_(hub),
       options_(std::move(options)),
-      root_blackboard_(hub, chart.Name()),
-      chart_(chart),
-      chart_name_(chart.Name()),
+      root_blackboard_(hub, definition->Name()),
+      definition_(std::move(definition)),
+      own_definition_(own),
       watchdog_limit_ms_(std::max<std::int64_t>(0, options_.watchdog_limit.count())) {
   if (options_.reporter) reporter_ = std::make_shared<const Reporter>(options_.reporter);
 }
 
 EngineCore::~EngineCore() {
   Shutdown();
-  // Transitions first (their conditions and actions may refer to blackboards), then the
-  // states in reverse creation order.
-  owned_transitions_.clear();
-  while (!owned_states_.empty()) {
-    owned_states_.pop_back();
-  }
+  DestroyBlock();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -46,7 +44,7 @@ EngineCore::~EngineCore() {
 void EngineCore::Report(EngineReport::Kind kind, std::string text) const {
   EngineReport report;
   report.kind = kind;
-  report.chart = chart_name_;
+  report.chart = Name();
   report.text = std::move(text);
   Deliver(report);
 }
@@ -99,7 +97,7 @@ void EngineCore::ApplyActivityLimits() {
   std::lock_guard<std::mutex> lock(limits_mutex_);
   for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) {
     for (const auto& [activity, limit] : activity_limits_) {
-      if (activity_names_[slot] == activity) {
+      if (definition_->activity_names_[slot] == activity) {
         activity_limits_ms_[slot].store(std::max<std::int64_t>(0, limit.count()),
                                         std::memory_order_relaxed);
       }
@@ -119,7 +117,7 @@ std::chrono::milliseconds EngineCore::ShortestWatchdogLimit() const noexcept {
 std::int64_t EngineCore::LimitOf(CallKind kind, const void* subject) const noexcept {
   if (kind == CallKind::Activity) {
     const auto* state = static_cast<const BasicState*>(subject);
-    const std::int64_t own = activity_limits_ms_[state->watch_slot_].load(std::memory_order_relaxed);
+    const std::int64_t own = activity_limits_ms_[state->slot_].load(std::memory_order_relaxed);
     if (own >= 0) return own;
   }
   return watchdog_limit_ms_.load(std::memory_order_relaxed);
@@ -133,7 +131,7 @@ std::string EngineCore::DescribeCall(CallKind kind, const void* subject) const {
     case CallKind::ActivityInit: {
       const auto* basic = static_cast<const BasicState*>(state);
       return std::string(kind == CallKind::ActivityInit ? "UserInit of activity '" : "activity '") +
-             activity_names_[basic->watch_slot_] + "' of " + DescribeLabelled(state);
+             definition_->activity_names_[basic->slot_] + "' of " + DescribeLabelled(state);
     }
     case CallKind::Guard:
       return "guard of " + DescribeTransition(transition);
@@ -180,7 +178,7 @@ void EngineCore::Inspect(std::chrono::steady_clock::time_point now,
       if (slot.overrun != 0) {
         EngineReport ended;
         ended.kind = EngineReport::Kind::OverrunEnded;
-        ended.chart = chart_name_;
+        ended.chart = Name();
         ended.overrun = slot.overrun;
         ended.running = std::chrono::duration_cast<std::chrono::milliseconds>(now - slot.since);
         ended.call = std::move(slot.call);
@@ -204,7 +202,7 @@ void EngineCore::Inspect(std::chrono::steady_clock::time_point now,
     overruns_.fetch_add(1, std::memory_order_relaxed);
     EngineReport overrun;
     overrun.kind = EngineReport::Kind::Overrun;
-    overrun.chart = chart_name_;
+    overrun.chart = Name();
     overrun.overrun = slot.overrun;
     overrun.running = std::chrono::duration_cast<std::chrono::milliseconds>(now - slot.since);
     overrun.text = call + " has been running for " + Seconds(now - slot.since) +
@@ -240,9 +238,19 @@ void EngineCore::KeepAbandoned(std::unique_ptr<EngineCore> core) {
 // Statechart
 // -------------------------------------------------------------------------------------------
 
+Statechart::Statechart(std::shared_ptr<const Definition> definition, kse::messaging::MessageHub& hub,
+                       Options options) {
+  if (definition == nullptr) throw std::invalid_argument("a statechart needs a definition");
+  if (!definition->IsComplete()) {
+    throw std::logic_error("statechart '" + definition->Name() +
+                           "': its definition is not complete (Definition::Complete())");
+  }
+  core_ = std::make_unique<detail::EngineCore>(std::move(definition), nullptr, hub, std::move(options));
+}
+
 Statechart::Statechart(std::string name, kse::messaging::MessageHub& hub, Options options)
-    : OrState(std::move(name), nullptr),
-      core_(std::make_unique<detail::EngineCore>(*this, hub, options)) {}
+    : own_(std::make_shared<Definition>(std::move(name))),
+      core_(std::make_unique<detail::EngineCore>(own_, own_.get(), hub, std::move(options))) {}
 
 Statechart::~Statechart() {
   if (core_->Shutdown()) {
@@ -252,13 +260,44 @@ Statechart::~Statechart() {
   }
 }
 
-void Statechart::AdoptState(std::unique_ptr<State> state) { core_->AdoptState(std::move(state)); }
-
-void Statechart::AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition) {
-  if (transition->Source() == nullptr || transition->Target() == nullptr) {
-    throw std::invalid_argument("statechart '" + Name() + "': a transition needs a source and a target");
+Definition& Statechart::OwnDefinition() {
+  if (!own_) {
+    throw std::logic_error("statechart '" + Name() +
+                           "' is made from a shared definition: add states to the definition");
   }
-  core_->AdoptTransition(std::move(transition));
+  return *own_;
+}
+
+const std::string& Statechart::Name() const noexcept { return core_->Name(); }
+OrState* Statechart::Root() const noexcept { return core_->GetDefinition().Root(); }
+const Definition& Statechart::GetDefinition() const noexcept { return core_->GetDefinition(); }
+
+bool Statechart::IsActive(const State* state) const noexcept { return core_->IsActive(state); }
+State* Statechart::ActiveChild(const State* state) const noexcept { return core_->ActiveChild(state); }
+bool Statechart::IsRunning(const State* state) const noexcept {
+  if (state->Kind() == StateKind::Basic) {
+    return core_->ActivityRunning(static_cast<const BasicState*>(state));
+  }
+  if (state->Kind() == StateKind::Or && state->Region() == state) {
+    return core_->RegionRunning(static_cast<const OrState*>(state));
+  }
+  return false;
+}
+std::size_t Statechart::Launches(const BasicState* state) const noexcept { return core_->Launches(state); }
+IActivity* Statechart::ActivityOf(const BasicState* state) const noexcept {
+  return core_->HasBlock() ? core_->ActivityOf(state) : nullptr;
+}
+ICondition* Statechart::ConditionOf(const TransitionSegmentBase* transition) const noexcept {
+  return core_->HasBlock() ? core_->ConditionOf(transition) : nullptr;
+}
+IAction* Statechart::ActionOf(const TransitionSegmentBase* transition) const noexcept {
+  return core_->HasBlock() ? core_->ActionOf(transition) : nullptr;
+}
+Blackboard* Statechart::ScopeOf(const State* state) const noexcept {
+  return state->Region() == nullptr ? nullptr : core_->BoardOf(state->Region());
+}
+Blackboard* Statechart::ScopeOf(const TransitionSegmentBase* transition) const noexcept {
+  return transition->ScopeRegion() == nullptr ? nullptr : core_->BoardOf(transition->ScopeRegion());
 }
 
 void Statechart::Start() { core_->Start(); }
@@ -318,7 +357,23 @@ void Statechart::Wake() { core_->Wake(); }
 kse::messaging::MessageHub& Statechart::Hub() const noexcept { return core_->hub_; }
 Blackboard& Statechart::RootBlackboard() const noexcept { return core_->root_blackboard_; }
 const Options& Statechart::GetOptions() const noexcept { return core_->options_; }
-std::vector<State*> Statechart::States() const { return core_->States(); }
-std::vector<TransitionSegmentBase*> Statechart::Transitions() const { return core_->Transitions(); }
+std::vector<State*> Statechart::States() const {
+  const Definition& definition = core_->GetDefinition();
+  if (definition.IsComplete()) return definition.States();
+  // Not complete yet: the tree as built so far, in document order.
+  std::vector<State*> out;
+  std::vector<State*> pending{definition.Root()};
+  while (!pending.empty()) {
+    State* state = pending.back();
+    pending.pop_back();
+    out.push_back(state);
+    const auto& children = state->Children();
+    for (auto it = children.rbegin(); it != children.rend(); ++it) pending.push_back(*it);
+  }
+  return out;
+}
+std::vector<TransitionSegmentBase*> Statechart::Transitions() const {
+  return core_->GetDefinition().Transitions();
+}
 
 }  // namespace statechart_engine

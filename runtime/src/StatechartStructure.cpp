@@ -2,314 +2,124 @@
 
 #include <algorithm>
 #include <exception>
+#include <mutex>
+#include <new>
 #include <stdexcept>
 #include <utility>
 
 namespace statechart_engine::detail {
 
-namespace {
-
-// The order in which Monas tried a state's transitions: each guarded one was inserted at the
-// front of the list as it was created, each unguarded one appended.
-void OrderOutgoing(std::vector<TransitionSegmentBase*>& outgoing) {
-  std::vector<TransitionSegmentBase*> ordered;
-  ordered.reserve(outgoing.size());
-  for (auto it = outgoing.rbegin(); it != outgoing.rend(); ++it) {
-    if ((*it)->IsGuarded()) ordered.push_back(*it);
-  }
-  for (TransitionSegmentBase* transition : outgoing) {
-    if (!transition->IsGuarded()) ordered.push_back(transition);
-  }
-  outgoing.swap(ordered);
-}
-
-// Whether a state's class overrides OnEntry()/OnExit(): generated states never do, and a call
-// of State's own (empty) hooks is skipped. G++ can name the function a virtual call would reach
-// (its bound member function extension); elsewhere every hook is called.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpmf-conversions"
-#pragma GCC diagnostic ignored "-Wpedantic"
-using Hook = void (*)(State*);
-Hook EntryOf(State* state) { return reinterpret_cast<Hook>(state->*(&State::OnEntry)); }
-Hook ExitOf(State* state) { return reinterpret_cast<Hook>(state->*(&State::OnExit)); }
-#pragma GCC diagnostic pop
-
-bool OverridesEntry(State* state) {
-  static StartState plain("", nullptr);  // State's own hooks
-  static const Hook none = EntryOf(&plain);
-  return EntryOf(state) != none;
-}
-bool OverridesExit(State* state) {
-  static StartState plain("", nullptr);
-  static const Hook none = ExitOf(&plain);
-  return ExitOf(state) != none;
-}
-#else
-bool OverridesEntry(State*) { return true; }
-bool OverridesExit(State*) { return true; }
-#endif
-
-}  // namespace
-
 // ---------------------------------------------------------------------------------------------
-// Ownership
+// The statechart's own memory
 // ---------------------------------------------------------------------------------------------
 
-void EngineCore::AdoptState(std::unique_ptr<State> state) {
-  std::lock_guard<EngineLock> lock(engine_lock_);
-  if (IsActivated()) {
-    throw std::logic_error("statechart '" + chart_.Name() + "': cannot add state '" +
-                           state->Name() + "' after activation");
+void EngineCore::MakeBlock() {
+  const Definition& d = *definition_;
+  if (d.HasGivenParts() && d.taken_.exchange(true)) {
+    throw std::logic_error("statechart '" + Name() +
+                           "': its definition was given objects (not made with Make<T>()), "
+                           "which another statechart already took: it makes one statechart only");
   }
-  owned_states_.push_back(std::move(state));
-}
-
-void EngineCore::AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition) {
-  std::lock_guard<EngineLock> lock(engine_lock_);
-  if (IsActivated()) {
-    throw std::logic_error("statechart '" + chart_.Name() + "': cannot add transition '" +
-                           transition->Name() + "' after activation");
+  block_ = static_cast<unsigned char*>(
+      ::operator new(d.block_size_, std::align_val_t(d.block_align_)));
+  activity_runs_ = reinterpret_cast<std::atomic<bool>*>(block_ + d.activity_runs_at_);
+  active_child_ = reinterpret_cast<std::atomic<State*>*>(block_ + d.active_child_at_);
+  running_ = reinterpret_cast<std::atomic<int>*>(block_ + d.running_at_);
+  launches_ = reinterpret_cast<std::atomic<std::uint32_t>*>(block_ + d.launches_at_);
+  relaunches_ = reinterpret_cast<std::uint32_t*>(block_ + d.relaunches_at_);
+  boards_ = reinterpret_cast<kse::messaging::Blackboard*>(block_ + d.boards_at_);
+  for (std::size_t i = 0; i < d.basic_states_.size(); ++i) {
+    ::new (&activity_runs_[i]) std::atomic<bool>(false);
   }
-  transition->Source()->outgoing_.push_back(transition.get());
-  owned_transitions_.push_back(std::move(transition));
-}
-
-std::vector<State*> EngineCore::States() const {
-  std::vector<State*> out;
-  CollectStates(&chart_, out);
-  return out;
-}
-
-std::vector<TransitionSegmentBase*> EngineCore::Transitions() const {
-  std::lock_guard<EngineLock> lock(engine_lock_);
-  std::vector<TransitionSegmentBase*> out;
-  out.reserve(owned_transitions_.size());
-  for (const auto& transition : owned_transitions_) {
-    out.push_back(transition.get());
+  for (std::size_t i = 0; i < d.or_states_.size(); ++i) ::new (&active_child_[i]) std::atomic<State*>(nullptr);
+  for (std::size_t i = 0; i < d.regions_.size(); ++i) ::new (&running_[i]) std::atomic<int>(0);
+  for (std::size_t i = 0; i < d.basic_states_.size(); ++i) {
+    ::new (&launches_[i]) std::atomic<std::uint32_t>(0);
   }
-  return out;
-}
+  std::fill_n(relaunches_, d.basic_states_.size(), 0U);
 
-// ---------------------------------------------------------------------------------------------
-// Structure
-// ---------------------------------------------------------------------------------------------
-
-void EngineCore::CollectStates(State* state, std::vector<State*>& out) const {
-  out.push_back(state);
-  for (State* child : state->children_) {
-    CollectStates(child, out);
-  }
-}
-
-void EngineCore::CheckStructure() const {
-  auto fail = [this](const std::string& why) {
-    throw std::logic_error("statechart '" + chart_.Name() + "': " + why);
-  };
-  for (const auto& owned : owned_states_) {
-    const State* top = owned.get();
-    while (top->parent_ != nullptr) {
-      top = top->parent_;
+  // Blackboards, then the parts, which may subscribe to them; each step undone if a later fails.
+  std::size_t boards = 0;
+  std::size_t activities = 0;
+  std::size_t transitions = 0;
+  try {
+    for (; boards + 1 < d.regions_.size(); ++boards) {
+      ::new (&boards_[boards]) kse::messaging::Blackboard(hub_, d.regions_[boards + 1]->Name());
     }
-    if (top != &chart_) {
-      fail("state " + Describe(owned.get()) + " is not inside this statechart");
+    for (; activities < d.basic_states_.size(); ++activities) {
+      BasicState* state = d.basic_states_[activities];
+      MakePart(state->activity_, state->activity_at_, given_activities_);
     }
-  }
-  for (State* state : states_) {
-    switch (state->kind_) {
-      case StateKind::Or: {
-        std::size_t starts = 0;
-        std::size_t ends = 0;
-        for (State* child : state->children_) {
-          starts += child->kind_ == StateKind::Start ? 1U : 0U;
-          ends += child->kind_ == StateKind::End ? 1U : 0U;
-        }
-        if (starts != 1) {
-          fail("OR state " + Describe(state) + " needs exactly one START child, it has " +
-               std::to_string(starts));
-        }
-        if (ends > 1) {
-          fail("OR state " + Describe(state) + " has more than one END child");
-        }
-        break;
-      }
-      case StateKind::And:
-        for (State* child : state->children_) {
-          if (child->kind_ != StateKind::Or) {
-            fail("AND state " + Describe(state) + " has a child that is not an OR state: " +
-                 Describe(child));
-          }
-        }
-        break;
-      default:
-        if (!state->children_.empty()) {
-          fail(std::string(ToString(state->kind_)) + " state " + Describe(state) +
-               " cannot have children");
-        }
-        break;
-    }
-  }
-}
-
-void EngineCore::ComputeTransition(TransitionSegmentBase& t) {
-  auto fail = [this, &t](const std::string& why) {
-    throw std::logic_error("statechart '" + chart_.Name() + "': transition '" + t.Name() + "' " +
-                           why);
-  };
-  State* source = t.source_;
-  State* target = t.target_;
-  auto inside = [this](const State* state) {
-    while (state->parent_ != nullptr) {
-      state = state->parent_;
-    }
-    return state == &chart_;
-  };
-  if (!inside(source) || !inside(target)) {
-    fail("connects a state outside this statechart");
-  }
-  if (source->parent_ == nullptr || target->parent_ == nullptr) {
-    fail("cannot leave or enter the root");
-  }
-  if (target->kind_ == StateKind::Start) {
-    fail("enters a START state");
-  }
-  if (source->kind_ == StateKind::End) {
-    fail("leaves an END state");
-  }
-  // Lowest common ancestor of the parents = lowest state properly containing both ends.
-  State* a = source->parent_;
-  State* b = target->parent_;
-  while (a->depth_ > b->depth_) a = a->parent_;
-  while (b->depth_ > a->depth_) b = b->parent_;
-  while (a != b) {
-    a = a->parent_;
-    b = b->parent_;
-  }
-  // Leaving one region of an AND state for another leaves the whole AND state.
-  while (a->kind_ == StateKind::And) {
-    a = a->parent_;
-  }
-  t.lca_ = a;
-
-  State* exit_top = source;
-  while (exit_top->parent_ != a) {
-    exit_top = exit_top->parent_;
-  }
-  t.exit_top_ = exit_top;
-
-  // Appended to entry_paths_; Prepare points the transition at it once every path is in.
-  const std::size_t first = entry_paths_.size();
-  for (State* s = target; s != a; s = s->parent_) {
-    entry_paths_.push_back(s);
-  }
-  std::reverse(entry_paths_.begin() + static_cast<std::ptrdiff_t>(first), entry_paths_.end());
-  t.entry_length_ = static_cast<std::uint32_t>(entry_paths_.size() - first);
-
-  State* scope_owner = a;
-  while (scope_owner->parent_ != nullptr &&
-         !(scope_owner->kind_ == StateKind::Or && AsOr(scope_owner)->IsRegion())) {
-    scope_owner = scope_owner->parent_;
-  }
-  t.scope_ = scope_owner->parent_ == nullptr ? &root_blackboard_
-                                             : AsOr(scope_owner)->region_blackboard_.get();
-  if (t.condition_) t.condition_->SetBlackboard(t.scope_);
-  if (t.action_) t.action_->SetBlackboard(t.scope_);
-}
-
-void EngineCore::Prepare() {
-  states_.clear();
-  states_.reserve(owned_states_.size() + 1);  // the root and what it owns
-  CollectStates(&chart_, states_);
-  CheckStructure();
-
-  blackboards_.clear();
-  blackboards_.push_back(&root_blackboard_);
-  for (State* state : states_) {
-    if (state->kind_ == StateKind::Or) {
-      OrState* orState = AsOr(state);
-      orState->start_ = nullptr;
-      for (State* child : state->children_) {
-        if (child->kind_ == StateKind::Start) orState->start_ = child;
-      }
-      if (orState->IsRegion()) {
-        if (!orState->region_blackboard_) {
-          orState->region_blackboard_ =
-              std::make_unique<kse::messaging::Blackboard>(hub_, orState->Name());
-        }
-        blackboards_.push_back(orState->region_blackboard_.get());
-      }
-    }
-    if (state->parent_ == nullptr) {
-      state->scope_ = &root_blackboard_;
-      state->region_ = AsOr(state);
-    } else if (state->kind_ == StateKind::Or && AsOr(state)->IsRegion()) {
-      state->scope_ = AsOr(state)->region_blackboard_.get();
-      state->region_ = AsOr(state);
-    } else {
-      state->scope_ = state->parent_->scope_;
-      state->region_ = state->parent_->region_;
-    }
-    if (state->kind_ == StateKind::Basic) {
-      if (IActivity* activity = static_cast<BasicState*>(state)->activity_.get()) {
-        activity->SetBlackboard(state->scope_);
-      }
-    }
-    OrderOutgoing(state->outgoing_);
-    state->calls_entry_ = OverridesEntry(state);
-    state->calls_exit_ = OverridesExit(state);
-  }
-  entry_paths_.clear();
-  for (const auto& transition : owned_transitions_) {
-    ComputeTransition(*transition);
-  }
-  entry_paths_.shrink_to_fit();
-  std::size_t next = 0;
-  for (const auto& transition : owned_transitions_) {
-    transition->entry_path_ = entry_paths_.data() + next;
-    next += transition->entry_length_;
-  }
-  // The structure is fixed from here on: no room kept for growth.
-  owned_states_.shrink_to_fit();
-  owned_transitions_.shrink_to_fit();
-  for (State* state : states_) state->children_.shrink_to_fit();
-
-  // One watchdog slot per activity; its name is asked once, here, so that the watchdog never
-  // calls user code.
-  slot_states_.clear();
-  activity_names_.clear();
-  const auto basics = static_cast<std::size_t>(std::count_if(
-      states_.begin(), states_.end(), [](const State* s) { return s->kind_ == StateKind::Basic; }));
-  slot_states_.reserve(basics);
-  activity_names_.reserve(basics);
-  for (State* state : states_) {
-    if (state->kind_ != StateKind::Basic) continue;
-    auto* basic = static_cast<BasicState*>(state);
-    basic->watch_slot_ = static_cast<std::uint32_t>(slot_states_.size());
-    slot_states_.push_back(basic);
-    std::string name = "?";
-    if (basic->activity_) {
+    for (; transitions < d.owned_transitions_.size(); ++transitions) {
+      TransitionSegmentBase* t = d.owned_transitions_[transitions].get();
+      MakePart(t->condition_, t->condition_at_, given_conditions_);
       try {
-        name = basic->activity_->GetName();
+        MakePart(t->action_, t->action_at_, given_actions_);
       } catch (...) {
+        if (t->condition_.Maker()) ConditionOf(t)->~ICondition();
+        throw;
       }
     }
-    activity_names_.push_back(std::move(name));
+  } catch (...) {
+    while (transitions > 0) {
+      TransitionSegmentBase* t = d.owned_transitions_[--transitions].get();
+      if (t->action_.Maker()) ActionOf(t)->~IAction();
+      if (t->condition_.Maker()) ConditionOf(t)->~ICondition();
+    }
+    while (activities > 0) {
+      BasicState* state = d.basic_states_[--activities];
+      if (state->activity_.Maker()) ActivityOf(state)->~IActivity();
+    }
+    while (boards > 0) boards_[--boards].~Blackboard();
+    ::operator delete(block_, std::align_val_t(d.block_align_));
+    block_ = nullptr;
+    throw;
   }
-  activity_slot_count_ = slot_states_.size();
-  // Inline activities are watched through the engine's own slot (SlotOf).
-  if (UsesPool() && activity_slot_count_ > 0) {
-    activity_slots_ = std::make_unique<CallSlot[]>(activity_slot_count_);
-  }
-  activity_limits_ms_ =
-      std::make_unique<std::atomic<std::int64_t>[]>(std::max<std::size_t>(1, activity_slot_count_));
-  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) activity_limits_ms_[slot] = -1;
 }
+
+template <class I>
+void EngineCore::MakePart(const Part<I>& part, std::size_t at, std::vector<std::unique_ptr<I>>& owned) {
+  if (const auto* maker = part.Maker()) {
+    maker->Construct(block_ + at - maker->Base());
+  } else if (part.IsCreated()) {
+    std::unique_ptr<I> object = (*part.creator_)();
+    *reinterpret_cast<I**>(block_ + (at & ~std::size_t{1})) = object.get();
+    owned.push_back(std::move(object));
+  } else if (part.given_) {
+    owned.push_back(std::move(part.given_));
+  }
+}
+
+void EngineCore::DestroyBlock() noexcept {
+  if (block_ == nullptr) return;
+  const Definition& d = *definition_;
+  // Transitions first (their conditions and actions may refer to blackboards), then the
+  // activities, then the blackboards, as the states that held them went in reverse order.
+  for (auto it = d.owned_transitions_.rbegin(); it != d.owned_transitions_.rend(); ++it) {
+    if ((*it)->action_.Maker()) ActionOf(it->get())->~IAction();
+    if ((*it)->condition_.Maker()) ConditionOf(it->get())->~ICondition();
+  }
+  given_actions_.clear();
+  given_conditions_.clear();
+  for (auto it = d.basic_states_.rbegin(); it != d.basic_states_.rend(); ++it) {
+    if ((*it)->activity_.Maker()) ActivityOf(*it)->~IActivity();
+  }
+  given_activities_.clear();
+  for (std::size_t i = d.regions_.size() - 1; i > 0; --i) boards_[i - 1].~Blackboard();
+  ::operator delete(block_, std::align_val_t(d.block_align_));
+  block_ = nullptr;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Activation
+// ---------------------------------------------------------------------------------------------
 
 void EngineCore::CallUserInits() {
-  for (State* state : states_) {
-    if (state->kind_ != StateKind::Basic) continue;
-    IActivity* activity = static_cast<BasicState*>(state)->activity_.get();
+  const Definition& d = *definition_;
+  for (BasicState* state : d.basic_states_) {
+    IActivity* activity = ActivityOf(state);
     if (activity == nullptr) continue;
+    activity->SetBlackboard(BoardOf(state->region_));
     try {
       WatchedCall watched(engine_slot_, CallKind::ActivityInit, state);
       activity->UserInit();
@@ -323,10 +133,16 @@ void EngineCore::CallUserInits() {
              "UserInit of the activity of state " + Describe(state) + " threw");
     }
   }
-  for (const auto& transition : owned_transitions_) {
+  for (const auto& owned : d.owned_transitions_) {
+    TransitionSegmentBase* transition = owned.get();
+    kse::messaging::Blackboard* scope = BoardOf(transition->scope_);
+    ICondition* condition = ConditionOf(transition);
+    IAction* action = ActionOf(transition);
+    if (condition) condition->SetBlackboard(scope);
+    if (action) action->SetBlackboard(scope);
     try {
-      WatchedCall watched(engine_slot_, CallKind::GuardInit, transition.get());
-      if (transition->condition_) transition->condition_->UserInit();
+      WatchedCall watched(engine_slot_, CallKind::GuardInit, transition);
+      if (condition) condition->UserInit();
     } catch (const std::exception& e) {
       ++guard_failures_;
       Report(EngineReport::Kind::Failure,
@@ -337,8 +153,8 @@ void EngineCore::CallUserInits() {
              "UserInit of the guard of '" + transition->Name() + "' threw");
     }
     try {
-      WatchedCall watched(engine_slot_, CallKind::ActionInit, transition.get());
-      if (transition->action_) transition->action_->UserInit();
+      WatchedCall watched(engine_slot_, CallKind::ActionInit, transition);
+      if (action) action->UserInit();
     } catch (const std::exception& e) {
       ++action_failures_;
       Report(EngineReport::Kind::Failure,
@@ -359,7 +175,36 @@ void EngineCore::Activate() {
   if (IsActivated()) {
     return;
   }
-  Prepare();
+  if (own_definition_ != nullptr) own_definition_->Complete();
+  if (block_ == nullptr) MakeBlock();
+  const Definition& d = *definition_;
+
+  // One watchdog slot per activity; its name is asked once, here, so that the watchdog never
+  // calls user code.
+  // The activities' names, asked once per definition (a statechart's first activation), so
+  // that the watchdog never calls user code: an activity's class gives its name.
+  std::call_once(d.activity_names_once_, [&] {
+    d.activity_names_.reserve(d.basic_states_.size());
+    for (BasicState* basic : d.basic_states_) {
+      std::string name = "?";
+      if (IActivity* activity = ActivityOf(basic)) {
+        try {
+          name = activity->GetName();
+        } catch (...) {
+        }
+      }
+      d.activity_names_.push_back(std::move(name));
+    }
+  });
+  activity_slot_count_ = d.basic_states_.size();
+  // Inline activities are watched through the engine's own slot (SlotOf).
+  if (UsesPool() && activity_slot_count_ > 0) {
+    activity_slots_ = std::make_unique<CallSlot[]>(activity_slot_count_);
+  }
+  activity_limits_ms_ =
+      std::make_unique<std::atomic<std::int64_t>[]>(std::max<std::size_t>(1, activity_slot_count_));
+  for (std::size_t slot = 0; slot < activity_slot_count_; ++slot) activity_limits_ms_[slot] = -1;
+
   ApplyActivityLimits();
   if (UsesPool() && !pool_) {
     pool_ = std::make_unique<WorkerPool>(options_.worker_threads);
@@ -368,7 +213,8 @@ void EngineCore::Activate() {
   watched_ = true;
   CallUserInits();
   activated_.store(true, std::memory_order_release);
-  EnterDefault(&chart_);
+  root_entered_.store(true, std::memory_order_release);
+  EnterDefault(root_);
   {
     std::lock_guard<std::mutex> wake(wake_mutex_);
     woken_ = true;  // the first evaluation

@@ -23,10 +23,10 @@ const char* ToString(StateKind kind) noexcept {
 }
 
 State::State(std::string name, State* parent, StateKind kind)
-    : name_(std::move(name)),
-      parent_(parent),
+    : parent_(parent),
       kind_(kind),
-      depth_(parent != nullptr ? parent->depth_ + 1 : 0) {
+      depth_(parent != nullptr ? parent->depth_ + 1 : 0),
+      name_(std::move(name)) {
   if (parent_ != nullptr) {
     parent_->children_.push_back(this);
   }
@@ -48,7 +48,7 @@ AndState::AndState(std::string name, State* parent)
     : State(std::move(name), parent, StateKind::And) {}
 AndState::~AndState() = default;
 
-BasicState::BasicState(std::string name, State* parent, std::unique_ptr<IActivity> activity)
+BasicState::BasicState(std::string name, State* parent, Part<IActivity> activity)
     : State(std::move(name), parent, StateKind::Basic), activity_(std::move(activity)) {}
 BasicState::~BasicState() = default;
 

@@ -88,7 +88,7 @@ bool EngineCore::Step() {
 bool EngineCore::StepRoot() {
   // Written only under engine_lock_: a plain increment, no locked read-modify-write.
   step_number_.store(step_number_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  return StepState(&chart_);
+  return StepState(root_);
 }
 
 // Monas' Step() of each kind of state. A region's running flag stops everything in the region;
@@ -102,8 +102,8 @@ bool EngineCore::StepState(State* state) {
   std::size_t depth = 0;
   for (;;) {
     if (state->kind_ == StateKind::Or) {
-      if (state->region_->IsRunning()) break;  // nothing in a running region steps
-      State* child = AsOr(state)->active_child_;
+      if (RegionRunningOf(state)) break;  // nothing in a running region steps
+      State* child = ActiveChildOf(state);
       if (child != nullptr && depth < kUnrolledDepth) {
         path[depth++] = state;
         state = child;
@@ -131,7 +131,7 @@ bool EngineCore::StepAnd(State* state) {
   // Whether a region was running is taken before the regions step, as Monas did.
   bool running = false;
   for (const State* region : state->children_) {
-    running = running || AsOr(region)->IsRunning();
+    running = running || running_[AsOr(region)->region_slot_].load(std::memory_order_acquire) > 0;
   }
   bool fired = false;
   for (State* region : state->children_) {
@@ -144,7 +144,7 @@ bool EngineCore::StepAnd(State* state) {
 }
 
 bool EngineCore::EvalGuard(TransitionSegmentBase* transition) {
-  ICondition* condition = transition->condition_.get();
+  ICondition* condition = ConditionOf(transition);
   if (condition == nullptr) {
     return true;
   }
@@ -184,7 +184,7 @@ bool EngineCore::FindChain(State* connector, std::size_t depth) {
 }
 
 bool EngineCore::TryTransitions(State* state) {
-  if (state->region_->IsRunning()) {
+  if (RegionRunningOf(state)) {
     return false;
   }
   for (TransitionSegmentBase* transition : state->outgoing_) {
@@ -213,7 +213,7 @@ bool EngineCore::TryTransitions(State* state) {
 
 void EngineCore::Fire(TransitionSegmentBase* transition) {
   Exit(transition->exit_top_);
-  if (IAction* action = transition->action_.get()) {
+  if (IAction* action = ActionOf(transition)) {
     try {
       WatchedCall watched(engine_slot_, CallKind::Action, transition);
       action->Execute();
@@ -251,10 +251,7 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
 // ---------------------------------------------------------------------------------------------
 
 void EngineCore::Enter(State* state) {
-  if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
-    AsOr(state->parent_)->active_child_ = state;
-  }
-  state->active_.store(true, std::memory_order_relaxed);
+  SetActiveChild(state->parent_or_slot_, state);
   if (!state->calls_entry_) return;
   try {
     WatchedCall watched(engine_slot_, CallKind::Entry, state);
@@ -315,12 +312,12 @@ void EngineCore::EnterAlong(State* const* path, std::size_t length, std::size_t 
 
 void EngineCore::Exit(State* state) {
   if (state->kind_ == StateKind::Or) {
-    if (State* child = AsOr(state)->active_child_) {
+    if (State* child = ActiveChildOf(state)) {
       Exit(child);
     }
   } else if (state->kind_ == StateKind::And) {
     for (auto it = state->children_.rbegin(); it != state->children_.rend(); ++it) {
-      if ((*it)->IsActive()) {
+      if (ActiveChildOf(*it) != nullptr) {  // a region entered (all are, unless a step was cut short)
         Exit(*it);
       }
     }
@@ -338,10 +335,7 @@ void EngineCore::Exit(State* state) {
     }
     UnwindIfGivenUp();
   }
-  state->active_.store(false, std::memory_order_relaxed);
-  if (state->parent_ != nullptr && state->parent_->kind_ == StateKind::Or) {
-    AsOr(state->parent_)->active_child_ = nullptr;
-  }
+  SetActiveChild(state->parent_or_slot_, nullptr);
 }
 
 }  // namespace statechart_engine::detail

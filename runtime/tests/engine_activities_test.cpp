@@ -41,7 +41,7 @@ TEST_P(Activities, ActivityRunsOncePerEntry) {
   }
   chart.RunUntilStable();
   EXPECT_EQ(runs->load(), 1);
-  EXPECT_EQ(x->Launches(), 1U);
+  EXPECT_EQ(chart.Launches(x), 1U);
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "X"));
 }
 
@@ -57,7 +57,7 @@ TEST_P(Activities, SelfLoopRunsTheActivityAgain) {
   chart.AddTransition(x, end);
   chart.RunUntilStable();
   EXPECT_EQ(runs->load(), 3);
-  EXPECT_EQ(x->Launches(), 3U);
+  EXPECT_EQ(chart.Launches(x), 3U);
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Root_3"));
 }
 
@@ -83,7 +83,7 @@ TEST_P(Activities, ActivityUsesTheBlackboardOfItsScope) {
                         return m != nullptr && m->ballfound() == 7;
                       }));
   chart.RunUntilStable();
-  EXPECT_EQ(x->Activity()->GetBlackboard(), &chart.RootBlackboard());
+  EXPECT_EQ(chart.ActivityOf(x)->GetBlackboard(), &chart.RootBlackboard());
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Seen"));
 }
 
@@ -111,7 +111,7 @@ TEST_P(Activities, NullActivityFinishesAtOnce) {
   ::testing::internal::CaptureStderr();
   auto* x = chart.Add<BasicState>("X", &chart, ActivityFactory::Instance().Create("NoSuchActivity_"));
   EXPECT_THAT(::testing::internal::GetCapturedStderr(), HasSubstr("unknown activity 'NoSuchActivity_'"));
-  EXPECT_EQ(x->Activity(), nullptr);
+  EXPECT_EQ(chart.ActivityOf(x), nullptr);
   auto* y = chart.Add<BasicState>("Y", &chart);
   chart.AddTransition(start, x);
   chart.AddTransition(x, y);
@@ -186,7 +186,7 @@ TEST_F(PooledActivities, TransitionsLeavingABusyStateAreNotTried) {
   chart.Activate();
   ASSERT_TRUE(chart.Step());
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
-  EXPECT_TRUE(x->IsRunning());
+  EXPECT_TRUE(chart.IsRunning(x));
   EXPECT_EQ(chart.RunningActivities(), 1U);
   for (int i = 0; i < 10; ++i) {
     EXPECT_FALSE(chart.Step());
@@ -198,7 +198,7 @@ TEST_F(PooledActivities, TransitionsLeavingABusyStateAreNotTried) {
   chart.RunUntilStable();  // waits for the activity, then steps
   EXPECT_EQ(evals->load(), 1);
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Y"));
-  EXPECT_FALSE(x->IsRunning());
+  EXPECT_FALSE(chart.IsRunning(x));
   EXPECT_EQ(chart.RunningActivities(), 0U);
 }
 
@@ -312,12 +312,12 @@ TEST_F(PooledActivities, ARunningActivityStopsItsWholeRegionOnly) {
   chart.RunIfWoken();
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "Comp", "Slow", "R2", "Quick"));
-  EXPECT_TRUE(r1->IsRunning());
-  EXPECT_FALSE(r2->IsRunning());
-  EXPECT_FALSE(chart.IsRunning()) << "the root's own region runs nothing";
+  EXPECT_TRUE(chart.IsRunning(r1));
+  EXPECT_FALSE(chart.IsRunning(r2));
+  EXPECT_FALSE(chart.IsRunning(chart.Root())) << "the root's own region runs nothing";
   EXPECT_EQ(slow->Region(), r1);
   EXPECT_EQ(comp->Region(), r1);
-  EXPECT_EQ(both->Region(), &chart);
+  EXPECT_EQ(both->Region(), chart.Root());
   EXPECT_FALSE(chart.Step());
   gate->Open();
   ASSERT_TRUE(WaitUntil([&] { return chart.RunningActivities() == 0U; }));
@@ -349,14 +349,14 @@ TEST_F(PooledActivities, AStateEnteredAgainWhileItsActivityRunsRunsItAgainAfterw
   }
   ASSERT_TRUE(WaitUntil([&] { return started->load() == 1; }));
   EXPECT_EQ(once->load(), 2) << "tried twice: fired once, then false";
-  EXPECT_EQ(work->Launches(), 2U);
-  EXPECT_TRUE(r1->IsRunning());
+  EXPECT_EQ(chart.Launches(work), 2U);
+  EXPECT_TRUE(chart.IsRunning(r1));
   EXPECT_EQ(chart.RunningActivities(), 2U);
   gate->Open();
   ASSERT_TRUE(WaitUntil([&] { return chart.RunningActivities() == 0U; }));
   EXPECT_EQ(started->load(), 2);
-  EXPECT_FALSE(work->IsRunning());
-  EXPECT_FALSE(r1->IsRunning());
+  EXPECT_FALSE(chart.IsRunning(work));
+  EXPECT_FALSE(chart.IsRunning(r1));
 }
 
 }  // namespace

@@ -268,7 +268,7 @@ TEST_F(EngineRules, TransitionExitsUpToTheLcaRunsTheActionThenEntersDownToTheTar
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "P", "Q", "S"));
   log.Clear();
   ASSERT_TRUE(chart.Step());
-  EXPECT_EQ(cross->LowestCommonAncestor(), &chart);
+  EXPECT_EQ(cross->LowestCommonAncestor(), chart.Root());
   EXPECT_THAT(log.Events(), ElementsAre("exit S", "exit Q", "exit P", "action S->V", "enter T",
                                         "enter U", "enter V", "enter V_1"));
   // Entered along the path: the STARTs of T and U stay inactive.
@@ -305,7 +305,7 @@ TEST_F(EngineRules, SelfLoopExitsAndReentersTheState) {
   ASSERT_TRUE(chart.Step());
   log.Clear();
   ASSERT_TRUE(chart.Step());
-  EXPECT_EQ(loop->LowestCommonAncestor(), &chart);
+  EXPECT_EQ(loop->LowestCommonAncestor(), chart.Root());
   EXPECT_THAT(log.Events(), ElementsAre("exit X", "loop action", "enter X", "run X"));
   again->store(false);
   EXPECT_FALSE(chart.Step());
@@ -503,24 +503,24 @@ TEST_F(EngineRules, EachAndRegionHasItsOwnBlackboard) {
   chart.Activate();
 
   Blackboard* root = &chart.RootBlackboard();
-  Blackboard* b1 = regions.r1->RegionBlackboard();
-  Blackboard* b2 = regions.r2->RegionBlackboard();
+  Blackboard* b1 = chart.ScopeOf(regions.r1);
+  Blackboard* b2 = chart.ScopeOf(regions.r2);
   ASSERT_NE(b1, nullptr);
   ASSERT_NE(b2, nullptr);
   EXPECT_NE(b1, b2);
   EXPECT_NE(b1, root);
-  EXPECT_EQ(chart.Scope(), root);
-  EXPECT_EQ(regions.both->Scope(), root);
-  EXPECT_EQ(a1->Scope(), b1);
-  EXPECT_EQ(a2->Scope(), b2);
-  EXPECT_EQ(a1->Activity()->GetBlackboard(), b1);
-  EXPECT_EQ(a2->Activity()->GetBlackboard(), b2);
+  EXPECT_EQ(chart.ScopeOf(chart.Root()), root);
+  EXPECT_EQ(chart.ScopeOf(regions.both), root);
+  EXPECT_EQ(chart.ScopeOf(a1), b1);
+  EXPECT_EQ(chart.ScopeOf(a2), b2);
+  EXPECT_EQ(chart.ActivityOf(a1)->GetBlackboard(), b1);
+  EXPECT_EQ(chart.ActivityOf(a2)->GetBlackboard(), b2);
   // Guards and actions get the scope of the transition's LCA.
-  EXPECT_EQ(t1->Condition()->GetBlackboard(), b1);
-  EXPECT_EQ(t1->Action()->GetBlackboard(), b1);
-  EXPECT_EQ(t2->Condition()->GetBlackboard(), b2);
-  EXPECT_EQ(t3->Condition()->GetBlackboard(), b2);
-  EXPECT_EQ(chart.Transitions()[0]->Scope(), root);  // Root_1 -> Both
+  EXPECT_EQ(chart.ConditionOf(t1)->GetBlackboard(), b1);
+  EXPECT_EQ(chart.ActionOf(t1)->GetBlackboard(), b1);
+  EXPECT_EQ(chart.ConditionOf(t2)->GetBlackboard(), b2);
+  EXPECT_EQ(chart.ConditionOf(t3)->GetBlackboard(), b2);
+  EXPECT_EQ(chart.ScopeOf(chart.Transitions()[0]), root);  // Root_1 -> Both
 }
 
 TEST_F(EngineRules, ASignalIsSeenOnceByEachRegion) {
@@ -577,8 +577,8 @@ TEST_F(EngineRules, AndStateIsLeftWhenNoRegionMovesAndNoneRuns) {
   chart.AddTransition(regions.both, after, When(Flag(true), leaveEvals));
   chart.RunIfWoken();
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "R1_2", "R2", "X2"));
-  EXPECT_TRUE(regions.r2->IsRunning());
-  EXPECT_FALSE(regions.r1->IsRunning());
+  EXPECT_TRUE(chart.IsRunning(regions.r2));
+  EXPECT_FALSE(chart.IsRunning(regions.r1));
   EXPECT_EQ(leaveEvals->load(), 0) << "X2 runs in a region: the AND state waits";
   gate->Open();
   ASSERT_TRUE(WaitUntil([&] { return chart.RunningActivities() == 0U; }));

@@ -270,7 +270,7 @@ TEST_P(GeneratedStyle, ScansUntilTheBallIsReadyThenEnds) {
   chart.RunUntilStable();
   auto* scan = static_cast<BasicState*>(chart.States()[4]);
   ASSERT_EQ(scan->Name(), "Node_Scan");
-  EXPECT_EQ(scan->Launches(), 2U);
+  EXPECT_EQ(chart.Launches(scan), 2U);
   head.ProcessMessages();
   auto headAction = head.ReadSignal<BToHeadMessage>("behavior");
   ASSERT_NE(headAction, nullptr);
@@ -285,7 +285,7 @@ TEST_P(GeneratedStyle, ScansUntilTheBallIsReadyThenEnds) {
   clock.Advance(std::chrono::milliseconds(250));
   chart.RunUntilStable();
   EXPECT_THAT(chart.ActiveStates(), ElementsAre("Node_MiniGoalie", "Node_0_4"));
-  EXPECT_EQ(scan->Launches(), 3U);
+  EXPECT_EQ(chart.Launches(scan), 3U);
   EXPECT_EQ(chart.ActivityFailures(), 0U);
 }
 

@@ -1,12 +1,15 @@
 #ifndef STATECHART_ENGINE_FACTORIES_H
 #define STATECHART_ENGINE_FACTORIES_H
 
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <type_traits>
 
 #include "kse/messaging/MessageHub.h"
 #include "statechart_engine/Interfaces.h"
+#include "statechart_engine/Part.h"
 #include "statechart_engine/Registry.h"
 #include "statechart_engine/Statechart.h"
 
@@ -31,8 +34,18 @@ class ActivityFactory : public Registry<IActivity> {
   /// Defined in the library, so that a process has one, however its parts are linked.
   static ActivityFactory& Instance();
 
+  /// The activity registered under a name as the Part of a definition: made anew for every
+  /// statechart of the definition, in its block. Empty (no activity: its state finishes at
+  /// once), with a message on standard error, when the name is unknown, as Create() is.
+  Part<IActivity> PartNamed(const std::string& name) const;
+  /// Registers how a registered activity is made in a statechart's block (ActivityRegistrar).
+  void RegisterPart(const std::string& name, Part<IActivity> part);
+
  private:
   ActivityFactory() : Registry("activity") {}
+
+  mutable std::mutex parts_mutex_;
+  std::map<std::string, Part<IActivity>> parts_;
 };
 
 template <class T>
@@ -43,7 +56,9 @@ class ActivityRegistrar {
   using Type = ActivityRegistrar<T>;  // Monas spelling: ActivityRegistrar<T>::Type temp("T");
 
   explicit ActivityRegistrar(const std::string& name, const char* origin = KSE_REGISTRAR_ORIGIN) {
-    ActivityFactory::Instance().Register(name, [] { return std::unique_ptr<IActivity>(new T()); }, origin);
+    if (ActivityFactory::Instance().Register(name, [] { return std::unique_ptr<IActivity>(new T()); }, origin)) {
+      ActivityFactory::Instance().RegisterPart(name, Make<T>());
+    }
   }
 };
 

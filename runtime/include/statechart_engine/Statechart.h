@@ -14,6 +14,7 @@
 
 #include "kse/messaging/Blackboard.h"
 #include "kse/messaging/MessageHub.h"
+#include "statechart_engine/Definition.h"
 #include "statechart_engine/Interfaces.h"
 #include "statechart_engine/States.h"
 #include "statechart_engine/TransitionSegment.h"
@@ -105,34 +106,41 @@ struct Options {
 /// - A watchdog thread reports calls into user code that run longer than a limit
 ///   (Options::watchdog_limit, 1 s by default), once per call, naming the call and its state or
 ///   transition. Stop() returns within Options::stop_limit even if a call never returns.
-class Statechart : public OrState {
+class Statechart {
  public:
   using Observer = std::function<void(const TransitionSegmentBase&)>;
 
+  /// A statechart made from a shared definition (see Definition), which must be complete
+  /// (std::logic_error otherwise, and when its given parts were taken by another statechart).
+  Statechart(std::shared_ptr<const Definition> definition, kse::messaging::MessageHub& hub,
+             Options options = {});
+  /// A statechart that builds its own definition, through Add() and AddTransition(), until it
+  /// is activated.
   Statechart(std::string name, kse::messaging::MessageHub& hub, Options options = {});
-  ~Statechart() override;
+  ~Statechart();
+  Statechart(const Statechart&) = delete;
+  Statechart& operator=(const Statechart&) = delete;
 
-  /// Creates a state owned by this statechart: Add<OrState>("Node_0_3", Node_0).
-  /// The structure is fixed once the statechart is activated.
+  const std::string& Name() const noexcept;
+  /// The root OR state of its definition.
+  OrState* Root() const noexcept;
+  const Definition& GetDefinition() const noexcept;
+
+  /// Creates a state in the statechart's own definition: Add<OrState>("Node_0_3", Node_0); the
+  /// statechart itself stands for its root. The structure is fixed once the statechart is
+  /// activated. Throws std::logic_error for a statechart made from a shared definition.
   template <class S, class... A>
   S* Add(A&&... args) {
-    static_assert(std::is_base_of_v<State, S>, "Add<S>: S must be a State");
-    auto owned = std::make_unique<S>(std::forward<A>(args)...);
-    S* raw = owned.get();
-    AdoptState(std::move(owned));
-    return raw;
+    return OwnDefinition().Add<S>(RootFor(std::forward<A>(args))...);
   }
 
-  /// Creates a transition owned by this statechart; model order is the order of these calls.
+  /// Creates a transition in the statechart's own definition; model order is the order of
+  /// these calls.
   template <class Src, class Dst>
   TransitionSegment<Src, Dst>* AddTransition(Src* source, Dst* target,
-                                             std::unique_ptr<ICondition> condition = nullptr,
-                                             std::unique_ptr<IAction> action = nullptr) {
-    auto owned = std::make_unique<TransitionSegment<Src, Dst>>(source, target, std::move(condition),
-                                                               std::move(action));
-    auto* raw = owned.get();
-    AdoptTransition(std::move(owned));
-    return raw;
+                                             Part<ICondition> condition = nullptr,
+                                             Part<IAction> action = nullptr) {
+    return OwnDefinition().AddTransition(source, target, std::move(condition), std::move(action));
   }
 
   /// Activates (if not yet) and runs the engine on its own thread until Stop(): whenever it is
@@ -213,13 +221,41 @@ class Statechart : public OrState {
   const Options& GetOptions() const noexcept;
   /// Every state of the tree in document order (after Activate()).
   std::vector<State*> States() const;
+
+  // What changes in this statechart as it runs, for a state or transition of its definition.
+  // Safe to call from any thread (the value may be stale; see ActiveStates()); nullptr, false
+  // or 0 before Activate().
+
+  bool IsActive(const State* state) const noexcept;
+  /// The active child of an OR state (the root included), or nullptr.
+  State* ActiveChild(const State* state) const noexcept;
+  /// For a region or the root: an activity of the region runs. For a BASIC state: the activity
+  /// started by its last entry has not finished.
+  bool IsRunning(const State* state) const noexcept;
+  /// How many times the activity of a BASIC state has been started.
+  std::size_t Launches(const BasicState* state) const noexcept;
+  IActivity* ActivityOf(const BasicState* state) const noexcept;
+  ICondition* ConditionOf(const TransitionSegmentBase* transition) const noexcept;
+  IAction* ActionOf(const TransitionSegmentBase* transition) const noexcept;
+  /// The blackboard of a state's region (the nearest AND region or the root containing it).
+  Blackboard* ScopeOf(const State* state) const noexcept;
+  /// The blackboard a transition's condition and action get.
+  Blackboard* ScopeOf(const TransitionSegmentBase* transition) const noexcept;
   /// Every transition in model order.
   std::vector<TransitionSegmentBase*> Transitions() const;
 
  private:
-  void AdoptState(std::unique_ptr<State> state);
-  void AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition);
+  Definition& OwnDefinition();
+  template <class T>
+  static decltype(auto) RootFor(T&& argument) {
+    if constexpr (std::is_same_v<std::decay_t<T>, Statechart*>) {
+      return static_cast<State*>(argument->Root());
+    } else {
+      return std::forward<T>(argument);
+    }
+  }
 
+  std::shared_ptr<Definition> own_;  // a definition the statechart builds itself
   std::unique_ptr<detail::EngineCore> core_;
 };
 

@@ -8,50 +8,56 @@
 #include <vector>
 
 #include "statechart_engine/Interfaces.h"
+#include "statechart_engine/Part.h"
 #include "statechart_engine/States.h"
 
 namespace statechart_engine {
 
-/// A transition (or one segment of a chain through condition connectors): source, target, an
-/// optional guard (none = always true) and an optional action. Named `<source>_TO_<target>`.
+/// A transition of a Definition (or one segment of a chain through condition connectors):
+/// source, target, an optional guard (none = always true) and an optional action, made for each
+/// statechart of the definition (see Part). Named `<source>_TO_<target>`.
 class TransitionSegmentBase {
  public:
-  TransitionSegmentBase(State* source, State* target, std::unique_ptr<ICondition> condition,
-                        std::unique_ptr<IAction> action);
+  TransitionSegmentBase(State* source, State* target, Part<ICondition> condition,
+                        Part<IAction> action);
   virtual ~TransitionSegmentBase();
   TransitionSegmentBase(const TransitionSegmentBase&) = delete;
   TransitionSegmentBase& operator=(const TransitionSegmentBase&) = delete;
 
   State* Source() const noexcept { return source_; }
   State* Target() const noexcept { return target_; }
-  ICondition* Condition() const noexcept { return condition_.get(); }
-  IAction* Action() const noexcept { return action_.get(); }
   const std::string& Name() const noexcept { return name_; }
-  bool IsGuarded() const noexcept { return condition_ != nullptr; }
+  bool IsGuarded() const noexcept { return static_cast<bool>(condition_); }
+  bool HasAction() const noexcept { return static_cast<bool>(action_); }
 
-  /// The lowest common ancestor (after Activate()): the lowest OR state that properly contains
-  /// both source and target.
+  /// The lowest common ancestor (once the definition is complete): the lowest OR state that
+  /// properly contains both source and target.
   State* LowestCommonAncestor() const noexcept { return lca_; }
-  /// The blackboard given to the condition and the action (after Activate()).
-  Blackboard* Scope() const noexcept { return scope_; }
+  /// The region whose blackboard the condition and the action get (once complete): the
+  /// nearest AND region or the root containing the lowest common ancestor.
+  OrState* ScopeRegion() const noexcept { return scope_; }
 
  private:
   friend class detail::EngineCore;
+  friend class Definition;
 
+  // What firing reads, first.
   State* source_;
   State* target_;
-  std::unique_ptr<ICondition> condition_;
-  std::unique_ptr<IAction> action_;
-  std::string name_;
-
-  // Computed by the engine when the statechart is activated.
-  State* lca_ = nullptr;
-  State* exit_top_ = nullptr;         // the child of lca_ that contains the source
-  // From the child of lca_ that contains the target down to it, in the engine's table of paths
-  // (one allocation for every transition of the statechart).
+  State* exit_top_ = nullptr;  // the child of lca_ that contains the source (once complete)
+  // From the child of lca_ that contains the target down to it, in the definition's table of
+  // paths (one allocation for every transition).
   State* const* entry_path_ = nullptr;
-  Blackboard* scope_ = nullptr;
+  // Where the condition and the action of a statechart lie (Definition::Layout): 0 none, 1
+  // given, odd the slot of a pointer to a created one, even the offset of a made one.
+  std::size_t condition_at_ = 0;
+  std::size_t action_at_ = 0;
   std::uint32_t entry_length_ = 0;
+  State* lca_ = nullptr;
+  OrState* scope_ = nullptr;
+  Part<ICondition> condition_;
+  Part<IAction> action_;
+  std::string name_;
 };
 
 /// A transition between states of the given types (as the generator names them).
@@ -61,8 +67,8 @@ class TransitionSegment final : public TransitionSegmentBase {
   static_assert(std::is_base_of_v<State, Dst>, "the target must be a State");
 
  public:
-  TransitionSegment(Src* source, Dst* target, std::unique_ptr<ICondition> condition = nullptr,
-                    std::unique_ptr<IAction> action = nullptr)
+  TransitionSegment(Src* source, Dst* target, Part<ICondition> condition = nullptr,
+                    Part<IAction> action = nullptr)
       : TransitionSegmentBase(source, target, std::move(condition), std::move(action)) {}
 
   Src* TypedSource() const noexcept { return static_cast<Src*>(Source()); }

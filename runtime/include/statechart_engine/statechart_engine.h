@@ -9,6 +9,7 @@
 #include "kse/messages/all.h"
 #include "kse/messaging/Messaging.h"
 #include "statechart_engine/Factories.h"
+#include "statechart_engine/Definition.h"
 #include "statechart_engine/Interfaces.h"
 #include "statechart_engine/Statechart.h"
 #include "statechart_engine/States.h"

@@ -307,8 +307,7 @@ class CaseRun {
   void AwaitActivities() {
     std::size_t running = 0;
     for (State* state : chart().States()) {
-      if (state->Kind() == StateKind::Basic &&
-          static_cast<statechart_engine::BasicState*>(state)->IsRunning()) {
+      if (state->Kind() == StateKind::Basic && chart().IsRunning(state)) {
         ++running;
       }
     }
@@ -425,9 +424,9 @@ class CaseRun {
   std::string ActiveLeaves() {
     std::string list;
     for (State* state : chart().States()) {
-      if (!state->IsActive()) continue;
+      if (!chart().IsActive(state)) continue;
       bool leaf = true;
-      for (State* child : state->Children()) leaf = leaf && !child->IsActive();
+      for (State* child : state->Children()) leaf = leaf && !chart().IsActive(child);
       if (leaf) list += (list.empty() ? "" : ", ") + state->Label();
     }
     return list;
@@ -450,6 +449,8 @@ void RegisterActivities(const std::vector<std::string>& names) {
   for (const std::string& name : names) {
     statechart_engine::ActivityFactory::Instance().Register(
         name, [name] { return std::make_unique<ScriptedActivity>(name); });
+    statechart_engine::ActivityFactory::Instance().RegisterPart(
+        name, statechart_engine::Make<ScriptedActivity>(name));
   }
 }
 

@@ -85,7 +85,7 @@ TEST(AllKinds, ABallLeadsIntoBothRegionsOfTheAndState) {
 	const auto states = engine.States();
 	const auto walk = std::find_if(states.begin(), states.end(), [](auto* state) { return state->Name() == "Node_Walk"; });
 	ASSERT_NE(walk, states.end());
-	(*walk)->Scope()->ProcessMessages();
+	engine.ScopeOf(*walk)->ProcessMessages();
 	EXPECT_TRUE(engine.Step());
 	EXPECT_TRUE(Active(engine, "Node_0_4_2_3"));
 }

@@ -15,58 +15,68 @@
 
 using namespace statechart_engine;
 
-AllKinds::AllKinds(kse::messaging::MessageHub& hub, const Options& options)
-	: _statechart("Node_Striker", hub, options) {
-	Statechart* Node_0 = &_statechart;
-	Node_0->SetLabel("0");
-	StartState* Node_0_1 = _statechart.Add<StartState>("Node_0_1", Node_0);
-	Node_0_1->SetLabel("0.1");
-	ConditionConnector* Node_0_2 = _statechart.Add<ConditionConnector>("Node_0_2", Node_0);
-	Node_0_2->SetLabel("0.2");
-	BasicState* Node_0_3 = _statechart.Add<BasicState>("Node_Search", Node_0, ActivityFactory::Instance().Create("Search"));
-	Node_0_3->SetLabel("0.3");
-	AndState* Node_0_4 = _statechart.Add<AndState>("Node_Together", Node_0);
-	Node_0_4->SetLabel("0.4");
-	OrState* Node_0_4_1 = _statechart.Add<OrState>("Node_0_4_1", Node_0_4);
-	Node_0_4_1->SetLabel("0.4.1");
-	StartState* Node_0_4_1_1 = _statechart.Add<StartState>("Node_0_4_1_1", Node_0_4_1);
-	Node_0_4_1_1->SetLabel("0.4.1.1");
-	BasicState* Node_0_4_1_2 = _statechart.Add<BasicState>("Node_Track", Node_0_4_1, ActivityFactory::Instance().Create("Track"));
-	Node_0_4_1_2->SetLabel("0.4.1.2");
-	EndState* Node_0_4_1_3 = _statechart.Add<EndState>("Node_0_4_1_3", Node_0_4_1);
-	Node_0_4_1_3->SetLabel("0.4.1.3");
-	OrState* Node_0_4_2 = _statechart.Add<OrState>("Node_0_4_2", Node_0_4);
-	Node_0_4_2->SetLabel("0.4.2");
-	StartState* Node_0_4_2_1 = _statechart.Add<StartState>("Node_0_4_2_1", Node_0_4_2);
-	Node_0_4_2_1->SetLabel("0.4.2.1");
-	BasicState* Node_0_4_2_2 = _statechart.Add<BasicState>("Node_Walk", Node_0_4_2, ActivityFactory::Instance().Create("Walk"));
-	Node_0_4_2_2->SetLabel("0.4.2.2");
-	EndState* Node_0_4_2_3 = _statechart.Add<EndState>("Node_0_4_2_3", Node_0_4_2);
-	Node_0_4_2_3->SetLabel("0.4.2.3");
-	EndState* Node_0_5 = _statechart.Add<EndState>("Node_0_5", Node_0);
-	Node_0_5->SetLabel("0.5");
+const std::shared_ptr<const Definition>& AllKinds::SharedDefinition() {
+	// Built once (a static's initialisation is thread-safe); each statechart made from it
+	// holds only what changes as it runs, and makes its own guards, actions and activities.
+	static const std::shared_ptr<const Definition> shared = [] {
+		auto definition = std::make_shared<Definition>("Node_Striker");
+		OrState* Node_0 = definition->Root();
+		Node_0->SetLabel("0");
+		StartState* Node_0_1 = definition->Add<StartState>("Node_0_1", Node_0);
+		Node_0_1->SetLabel("0.1");
+		ConditionConnector* Node_0_2 = definition->Add<ConditionConnector>("Node_0_2", Node_0);
+		Node_0_2->SetLabel("0.2");
+		BasicState* Node_0_3 = definition->Add<BasicState>("Node_Search", Node_0, ActivityFactory::Instance().PartNamed("Search"));
+		Node_0_3->SetLabel("0.3");
+		AndState* Node_0_4 = definition->Add<AndState>("Node_Together", Node_0);
+		Node_0_4->SetLabel("0.4");
+		OrState* Node_0_4_1 = definition->Add<OrState>("Node_0_4_1", Node_0_4);
+		Node_0_4_1->SetLabel("0.4.1");
+		StartState* Node_0_4_1_1 = definition->Add<StartState>("Node_0_4_1_1", Node_0_4_1);
+		Node_0_4_1_1->SetLabel("0.4.1.1");
+		BasicState* Node_0_4_1_2 = definition->Add<BasicState>("Node_Track", Node_0_4_1, ActivityFactory::Instance().PartNamed("Track"));
+		Node_0_4_1_2->SetLabel("0.4.1.2");
+		EndState* Node_0_4_1_3 = definition->Add<EndState>("Node_0_4_1_3", Node_0_4_1);
+		Node_0_4_1_3->SetLabel("0.4.1.3");
+		OrState* Node_0_4_2 = definition->Add<OrState>("Node_0_4_2", Node_0_4);
+		Node_0_4_2->SetLabel("0.4.2");
+		StartState* Node_0_4_2_1 = definition->Add<StartState>("Node_0_4_2_1", Node_0_4_2);
+		Node_0_4_2_1->SetLabel("0.4.2.1");
+		BasicState* Node_0_4_2_2 = definition->Add<BasicState>("Node_Walk", Node_0_4_2, ActivityFactory::Instance().PartNamed("Walk"));
+		Node_0_4_2_2->SetLabel("0.4.2.2");
+		EndState* Node_0_4_2_3 = definition->Add<EndState>("Node_0_4_2_3", Node_0_4_2);
+		Node_0_4_2_3->SetLabel("0.4.2.3");
+		EndState* Node_0_5 = definition->Add<EndState>("Node_0_5", Node_0);
+		Node_0_5->SetLabel("0.5");
 
-	// 0.1_TO_0.2: /TimeoutAction.behavior.100
-	_statechart.AddTransition(Node_0_1, Node_0_2, nullptr, std::make_unique<TimeoutAction>("behavior", 100));
-	// 0.2_TO_Search: [behavior.State.HeadToBMessage==NULL || behavior.State.HeadToBMessage.ballfound()==0]
-	_statechart.AddTransition(Node_0_2, Node_0_3, std::make_unique<kse_statechart_AllKinds::TrCond_0_2_TO_0_3>(), nullptr);
-	// 0.2_TO_Together: [behavior.State.HeadToBMessage.ballfound()>0 &&  !ballAway(worldstate.Data.WorldInfo)]
-	_statechart.AddTransition(Node_0_2, Node_0_4, std::make_unique<kse_statechart_AllKinds::TrCond_0_2_TO_0_4>(), nullptr);
-	// Search_TO_Search: [TimeoutCheck(behavior) && worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING]/TimeoutAction.behavior.250
-	_statechart.AddTransition(Node_0_3, Node_0_3, std::make_unique<kse_statechart_AllKinds::TrCond_0_3_TO_0_3>(), std::make_unique<TimeoutAction>("behavior", 250));
-	// Search_TO_0.5: [worldstate.State.GameStateMessage.player_state()!=PLAYER_PLAYING]/publish.motion.Signal.MotionActionMessage.set_command("InitPose");process_messages;publish_all;TimeoutAction.behavior.50
-	_statechart.AddTransition(Node_0_3, Node_0_5, std::make_unique<kse_statechart_AllKinds::TrCond_0_3_TO_0_5>(), std::make_unique<kse_statechart_AllKinds::TrAction_0_3_TO_0_5>());
-	// Together_TO_0.5: [worldstate.Signal.FallMessage.fall()!=0]
-	_statechart.AddTransition(Node_0_4, Node_0_5, std::make_unique<kse_statechart_AllKinds::TrCond_0_4_TO_0_5>(), nullptr);
-	// 0.4.1.1_TO_Track
-	_statechart.AddTransition(Node_0_4_1_1, Node_0_4_1_2, nullptr, nullptr);
-	// Track_TO_0.4.1.3
-	_statechart.AddTransition(Node_0_4_1_2, Node_0_4_1_3, nullptr, nullptr);
-	// 0.4.2.1_TO_Walk
-	_statechart.AddTransition(Node_0_4_2_1, Node_0_4_2_2, nullptr, nullptr);
-	// Walk_TO_0.4.2.3: [worldstate.Data.WorldInfo.myPosition().confidence() > 0.5]
-	_statechart.AddTransition(Node_0_4_2_2, Node_0_4_2_3, std::make_unique<kse_statechart_AllKinds::TrCond_0_4_2_2_TO_0_4_2_3>(), nullptr);
+		// 0.1_TO_0.2: /TimeoutAction.behavior.100
+		definition->AddTransition(Node_0_1, Node_0_2, nullptr, Make<TimeoutAction>("behavior", 100));
+		// 0.2_TO_Search: [behavior.State.HeadToBMessage==NULL || behavior.State.HeadToBMessage.ballfound()==0]
+		definition->AddTransition(Node_0_2, Node_0_3, Make<kse_statechart_AllKinds::TrCond_0_2_TO_0_3>(), nullptr);
+		// 0.2_TO_Together: [behavior.State.HeadToBMessage.ballfound()>0 &&  !ballAway(worldstate.Data.WorldInfo)]
+		definition->AddTransition(Node_0_2, Node_0_4, Make<kse_statechart_AllKinds::TrCond_0_2_TO_0_4>(), nullptr);
+		// Search_TO_Search: [TimeoutCheck(behavior) && worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING]/TimeoutAction.behavior.250
+		definition->AddTransition(Node_0_3, Node_0_3, Make<kse_statechart_AllKinds::TrCond_0_3_TO_0_3>(), Make<TimeoutAction>("behavior", 250));
+		// Search_TO_0.5: [worldstate.State.GameStateMessage.player_state()!=PLAYER_PLAYING]/publish.motion.Signal.MotionActionMessage.set_command("InitPose");process_messages;publish_all;TimeoutAction.behavior.50
+		definition->AddTransition(Node_0_3, Node_0_5, Make<kse_statechart_AllKinds::TrCond_0_3_TO_0_5>(), Make<kse_statechart_AllKinds::TrAction_0_3_TO_0_5>());
+		// Together_TO_0.5: [worldstate.Signal.FallMessage.fall()!=0]
+		definition->AddTransition(Node_0_4, Node_0_5, Make<kse_statechart_AllKinds::TrCond_0_4_TO_0_5>(), nullptr);
+		// 0.4.1.1_TO_Track
+		definition->AddTransition(Node_0_4_1_1, Node_0_4_1_2, nullptr, nullptr);
+		// Track_TO_0.4.1.3
+		definition->AddTransition(Node_0_4_1_2, Node_0_4_1_3, nullptr, nullptr);
+		// 0.4.2.1_TO_Walk
+		definition->AddTransition(Node_0_4_2_1, Node_0_4_2_2, nullptr, nullptr);
+		// Walk_TO_0.4.2.3: [worldstate.Data.WorldInfo.myPosition().confidence() > 0.5]
+		definition->AddTransition(Node_0_4_2_2, Node_0_4_2_3, Make<kse_statechart_AllKinds::TrCond_0_4_2_2_TO_0_4_2_3>(), nullptr);
+		definition->Complete();
+		return std::shared_ptr<const Definition>(std::move(definition));
+	}();
+	return shared;
 }
+
+AllKinds::AllKinds(kse::messaging::MessageHub& hub, const Options& options)
+	: _statechart(SharedDefinition(), hub, options) {}
 
 void AllKinds::Start() {
 	_statechart.Start();

@@ -2,6 +2,9 @@
 #ifndef KSE_STATECHART_ALLKINDS_H
 #define KSE_STATECHART_ALLKINDS_H
 
+#include <memory>
+
+#include <statechart_engine/Definition.h>
 #include <statechart_engine/Factories.h>
 #include <statechart_engine/Statechart.h>
 
@@ -12,6 +15,8 @@ public:
 	void Start() override;
 	void Stop() override;
 	statechart_engine::Statechart& Chart() override { return _statechart; }
+	/** The structure every AllKinds shares, built when the first one is made. */
+	static const std::shared_ptr<const statechart_engine::Definition>& SharedDefinition();
 
 private:
 	statechart_engine::Statechart _statechart;

@@ -23,6 +23,9 @@ class MonasTemplates {
 		#ifndef KSE_STATECHART_«plan.className.toUpperCase»_H
 		#define KSE_STATECHART_«plan.className.toUpperCase»_H
 
+		#include <memory>
+
+		#include <statechart_engine/Definition.h>
 		#include <statechart_engine/Factories.h>
 		#include <statechart_engine/Statechart.h>
 
@@ -33,6 +36,8 @@ class MonasTemplates {
 			void Start() override;
 			void Stop() override;
 			statechart_engine::Statechart& Chart() override { return _statechart; }
+			/** The structure every «plan.className» shares, built when the first one is made. */
+			static const std::shared_ptr<const statechart_engine::Definition>& SharedDefinition();
 
 		private:
 			statechart_engine::Statechart _statechart;
@@ -58,20 +63,30 @@ class MonasTemplates {
 
 		using namespace statechart_engine;
 
-		«plan.className»::«plan.className»(kse::messaging::MessageHub& hub, const Options& options)
-			: _statechart(«CppNames.string(plan.stateName(plan.root))», hub, options) {
-			Statechart* «plan.variable(plan.root)» = &_statechart;
-			«plan.root.labelling(plan)»
-			«FOR node : plan.nodes.tail»
-				«node.declaration(plan)»
-				«node.labelling(plan)»
-			«ENDFOR»
+		const std::shared_ptr<const Definition>& «plan.className»::SharedDefinition() {
+			// Built once (a static's initialisation is thread-safe); each statechart made from it
+			// holds only what changes as it runs, and makes its own guards, actions and activities.
+			static const std::shared_ptr<const Definition> shared = [] {
+				auto definition = std::make_shared<Definition>(«CppNames.string(plan.stateName(plan.root))»);
+				OrState* «plan.variable(plan.root)» = definition->Root();
+				«plan.root.labelling(plan)»
+				«FOR node : plan.nodes.tail»
+					«node.declaration(plan)»
+					«node.labelling(plan)»
+				«ENDFOR»
 
-			«FOR transition : plan.transitions»
-				// «CppNames.comment(transition.name)»«IF transition.expression !== null && !transition.expression.isBlank»: «CppNames.comment(transition.expression)»«ENDIF»
-				_statechart.AddTransition(«plan.variable(transition.source)», «plan.variable(transition.target)», «transition.conditionArgument», «transition.actionArgument(plan)»);
-			«ENDFOR»
+				«FOR transition : plan.transitions»
+					// «CppNames.comment(transition.name)»«IF transition.expression !== null && !transition.expression.isBlank»: «CppNames.comment(transition.expression)»«ENDIF»
+					definition->AddTransition(«plan.variable(transition.source)», «plan.variable(transition.target)», «transition.conditionArgument», «transition.actionArgument(plan)»);
+				«ENDFOR»
+				definition->Complete();
+				return std::shared_ptr<const Definition>(std::move(definition));
+			}();
+			return shared;
 		}
+
+		«plan.className»::«plan.className»(kse::messaging::MessageHub& hub, const Options& options)
+			: _statechart(SharedDefinition(), hub, options) {}
 
 		void «plan.className»::Start() {
 			_statechart.Start();
@@ -91,12 +106,12 @@ class MonasTemplates {
 		val parent = plan.variable(node.father_of)
 		val name = CppNames.string(plan.stateName(node))
 		switch NodeKind.of(node) {
-			case OR: '''OrState* «variable» = _statechart.Add<OrState>(«name», «parent»);'''
-			case AND: '''AndState* «variable» = _statechart.Add<AndState>(«name», «parent»);'''
-			case START: '''StartState* «variable» = _statechart.Add<StartState>(«name», «parent»);'''
-			case END: '''EndState* «variable» = _statechart.Add<EndState>(«name», «parent»);'''
-			case CONDITION: '''ConditionConnector* «variable» = _statechart.Add<ConditionConnector>(«name», «parent»);'''
-			case BASIC: '''BasicState* «variable» = _statechart.Add<BasicState>(«name», «parent», ActivityFactory::Instance().Create(«CppNames.string(plan.activityName(node))»));'''
+			case OR: '''OrState* «variable» = definition->Add<OrState>(«name», «parent»);'''
+			case AND: '''AndState* «variable» = definition->Add<AndState>(«name», «parent»);'''
+			case START: '''StartState* «variable» = definition->Add<StartState>(«name», «parent»);'''
+			case END: '''EndState* «variable» = definition->Add<EndState>(«name», «parent»);'''
+			case CONDITION: '''ConditionConnector* «variable» = definition->Add<ConditionConnector>(«name», «parent»);'''
+			case BASIC: '''BasicState* «variable» = definition->Add<BasicState>(«name», «parent», ActivityFactory::Instance().PartNamed(«CppNames.string(plan.activityName(node))»));'''
 			default: '''// «CppNames.comment(node.label)»: no state of type «CppNames.comment(node.type)»'''
 		}
 	}
@@ -107,7 +122,7 @@ class MonasTemplates {
 	}
 
 	def private static String conditionArgument(GenerationPlan.PlannedTransition transition) {
-		if (transition.condition === null) 'nullptr' else '''std::make_unique<«transition.namespace»::«transition.conditionClass»>()'''
+		if (transition.condition === null) 'nullptr' else '''Make<«transition.namespace»::«transition.conditionClass»>()'''
 	}
 
 	def private static String actionArgument(GenerationPlan.PlannedTransition transition, GenerationPlan plan) {
@@ -116,9 +131,9 @@ class MonasTemplates {
 		}
 		if (transition.action.timeoutOnly) {
 			val timeout = transition.action.head as TimeoutAction
-			return '''std::make_unique<TimeoutAction>(«CppNames.string(timeout.topic)», «timeout.milliseconds»)'''
+			return '''Make<TimeoutAction>(«CppNames.string(timeout.topic)», «timeout.milliseconds»)'''
 		}
-		'''std::make_unique<«transition.namespace»::«transition.actionClass»>()'''
+		'''Make<«transition.namespace»::«transition.actionClass»>()'''
 	}
 
 	def static boolean timeoutOnly(List<Action> actions) {

@@ -85,7 +85,7 @@ class GeneratorTest {
 		for (String kind : List.of("Add<StartState>", "Add<EndState>", "Add<ConditionConnector>", "Add<AndState>", "Add<OrState>", "Add<BasicState>")) {
 			assertTrue(chart.contains(kind), kind);
 		}
-		assertTrue(chart.contains("std::make_unique<TimeoutAction>(\"behavior\", 100)"), "a lone timeout uses TimeoutAction");
+		assertTrue(chart.contains("Make<TimeoutAction>(\"behavior\", 100)"), "a lone timeout uses TimeoutAction");
 		assertTrue(chart.contains("StatechartRegistrar<AllKinds> registrar(\"AllKinds\")"));
 		String mixed = Files.readString(folder.resolve("statecharts/AllKinds/transitions/TrAction_0_3_TO_0_5.h"));
 		assertTrue(mixed.contains("message.set_command(\"InitPose\");"));
@@ -142,7 +142,7 @@ class GeneratorTest {
 			}
 		}
 		String chart = Files.readString(folder.resolve("statecharts/AllKinds/AllKinds.cpp"));
-		assertTrue(chart.contains("_statechart.AddTransition(Node_0_1, Node_0_2, nullptr, std::make_unique<TimeoutAction>(\"behavior\", 100));"),
+		assertTrue(chart.contains("definition->AddTransition(Node_0_1, Node_0_2, nullptr, Make<TimeoutAction>(\"behavior\", 100));"),
 				"a list that is one TimeoutAction keeps the runtime's class: " + chart);
 	}
 
@@ -151,13 +151,13 @@ class GeneratorTest {
 		Model model = allKinds();
 		MonasGenerator.generate(model, folder, Options.DEFAULT);
 		List<String> lines = Files.readAllLines(folder.resolve("statecharts/AllKinds/AllKinds.cpp"));
-		java.util.regex.Pattern declaration = java.util.regex.Pattern.compile("\\t(?:Statechart|[A-Za-z]+State|ConditionConnector)\\* (Node_\\w+) = .*");
+		java.util.regex.Pattern declaration = java.util.regex.Pattern.compile("\\t+(?:[A-Za-z]+State|ConditionConnector)\\* (Node_\\w+) = .*");
 		List<String> labels = new ArrayList<>();
 		for (int i = 0; i < lines.size(); i++) {
 			var matcher = declaration.matcher(lines.get(i));
 			if (matcher.matches()) {
 				String next = lines.get(i + 1);
-				assertTrue(next.startsWith("\t" + matcher.group(1) + "->SetLabel(\""), lines.get(i) + " is followed by " + next);
+				assertTrue(next.strip().startsWith(matcher.group(1) + "->SetLabel(\""), lines.get(i) + " is followed by " + next);
 				labels.add(next.substring(next.indexOf('"') + 1, next.lastIndexOf('"')));
 			}
 		}
@@ -284,7 +284,7 @@ class GeneratorTest {
 		}
 		String chart = Files.readString(folder.resolve("statecharts/Hostile/Hostile.cpp"));
 		assertTrue(chart.contains("->SetLabel(\"0.2\\\"); system(\\\"touch kse-injected\\\"); //\");"), chart);
-		assertEquals(3, withoutLiteralsAndComments(chart).split("_statechart.AddTransition\\(", -1).length - 1, chart);
+		assertEquals(3, withoutLiteralsAndComments(chart).split("definition->AddTransition\\(", -1).length - 1, chart);
 	}
 
 	/** C++ text with its string literals and comments taken out: what the compiler reads as code. */
@@ -323,7 +323,7 @@ class GeneratorTest {
 		assertTrue(Files.readString(folder.resolve("statecharts/int_/int_.h")).contains("class int_ : public statechart_engine::IStatechart"));
 		assertTrue(Files.readString(folder.resolve("activities/class_/class_.h")).contains("class class_ : public statechart_engine::IActivity"));
 		assertTrue(Files.isRegularFile(folder.resolve("activities/_2fast/_2fast.cpp")));
-		assertTrue(Files.readString(folder.resolve("statecharts/int_/int_.cpp")).contains("ActivityFactory::Instance().Create(\"class_\")"));
+		assertTrue(Files.readString(folder.resolve("statecharts/int_/int_.cpp")).contains("ActivityFactory::Instance().PartNamed(\"class_\")"));
 	}
 
 	@Test
