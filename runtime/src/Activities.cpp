@@ -31,19 +31,25 @@ void EngineCore::Launch(BasicState* state) {
   // Only a step (under the engine's lock) launches: a plain increment, no locked instruction.
   std::atomic<std::uint32_t>& launches = launches_[state->slot_];
   launches.store(launches.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  if (!pool_) {
-    RunActivity(state, activity);
-    UnwindIfGivenUp();
-    if (inline_runs_last_ && current_loop_core != this) {
-      // The run is over, but the region behaves as if it went on until the next call, as a
-      // worker's run would: the region waits, the rest of the chart steps on.
-      // Not among running_activities_: nothing runs, nothing is to be waited for.
-      RunningOf(state).fetch_add(1, std::memory_order_acq_rel);
-      inline_runs_.push_back(state);
-      run_begins_work_.store(true, std::memory_order_release);
-    }
+  if (pool_) {
+    LaunchOnPool(state, activity);
     return;
   }
+  RunActivity(state, activity);
+  UnwindIfGivenUp();
+  if (inline_runs_last_ && current_loop_core != this) {
+    // The run is over, but the region behaves as if it went on until the next call, as a
+    // worker's run would: the region waits, the rest of the chart steps on.
+    // Not among running_activities_: nothing runs, nothing is to be waited for.
+    RunningOf(state).fetch_add(1, std::memory_order_acq_rel);
+    inline_runs_.push_back(state);
+    run_begins_work_.store(true, std::memory_order_release);
+  }
+}
+
+// Out of the inline path, which most launches take (the simulator's, the benchmarks'): its lock
+// and its lambda would give that path a larger frame.
+void EngineCore::LaunchOnPool(BasicState* state, IActivity* activity) {
   {
     std::lock_guard<std::mutex> lock(wake_mutex_);
     RunningOf(state).fetch_add(1, std::memory_order_acq_rel);

@@ -163,8 +163,7 @@ class EngineCore {
   // A statechart's guard, action or activity (after MakeBlock): see Definition::Layout.
   template <class I>
   I* Object(const Part<I>& part, std::size_t at) const noexcept {
-    if (at == 0) return nullptr;
-    if ((at & 1U) == 0) return reinterpret_cast<I*>(block_ + at);  // made: the common case
+    if ((at & 1U) == 0) return at == 0 ? nullptr : reinterpret_cast<I*>(block_ + at);  // made, or none
     if (at == 1) return part.given_object_;
     return *reinterpret_cast<I* const*>(block_ + (at & ~std::size_t{1}));
   }
@@ -194,6 +193,8 @@ class EngineCore {
   /// OR states walked down in a loop by StepState; deeper ones recurse.
   static constexpr std::size_t kUnrolledDepth = 16;
   bool TryTransitions(State* state);
+  /// A guard into a CONDITION connector held: fires the chain through it if one can go on.
+  bool FireThroughConnectors(TransitionSegmentBase* transition);
   bool EvalGuard(TransitionSegmentBase* transition);
   bool FindChain(State* connector, std::size_t depth);
   void Fire(TransitionSegmentBase* transition);
@@ -207,6 +208,7 @@ class EngineCore {
 
   // Activities
   void Launch(BasicState* state);
+  void LaunchOnPool(BasicState* state, IActivity* activity);
   void RunActivity(BasicState* state, IActivity* activity);
   void ActivityFailed(BasicState* state, const char* failure, const std::string& message);
   /// Called on a worker after the activity returned: true when it must run again (its state

@@ -193,22 +193,28 @@ bool EngineCore::TryTransitions(State* state) {
       Fire(transition);
       return true;
     }
-    chain_.clear();
-    chain_.push_back(transition);
-    if (!FindChain(transition->target_, 0)) {
-      continue;
-    }
-    // Every guard of the chain has been evaluated; now the segments fire in order.
-    std::vector<TransitionSegmentBase*> chain;
-    chain.swap(chain_);
-    for (TransitionSegmentBase* segment : chain) {
-      Fire(segment);
-    }
-    chain.clear();
-    chain_.swap(chain);  // keep the capacity
-    return true;
+    if (FireThroughConnectors(transition)) return true;
   }
   return false;
+}
+
+// Out of TryTransitions, which most steps run without a connector: the chain's bookkeeping
+// would give it a larger frame.
+bool EngineCore::FireThroughConnectors(TransitionSegmentBase* transition) {
+  chain_.clear();
+  chain_.push_back(transition);
+  if (!FindChain(transition->target_, 0)) {
+    return false;
+  }
+  // Every guard of the chain has been evaluated; now the segments fire in order.
+  std::vector<TransitionSegmentBase*> chain;
+  chain.swap(chain_);
+  for (TransitionSegmentBase* segment : chain) {
+    Fire(segment);
+  }
+  chain.clear();
+  chain_.swap(chain);  // keep the capacity
+  return true;
 }
 
 void EngineCore::Fire(TransitionSegmentBase* transition) {
