@@ -54,6 +54,12 @@ bool OverridesExit(State*) { return true; }
 
 std::string Describe(const State* state) { return "'" + state->Name() + "'"; }
 
+// The tree below `state`, itself first, in document order.
+void CollectStates(State* state, std::vector<State*>& out) {
+  out.push_back(state);
+  for (State* child : state->Children()) CollectStates(child, out);
+}
+
 // Room for `count` objects of type T at the end of a block of `size` bytes.
 template <class T>
 std::size_t Reserve(std::size_t& size, std::size_t& align, std::size_t count) {
@@ -123,9 +129,11 @@ std::vector<TransitionSegmentBase*> Definition::Transitions() const {
   return out;
 }
 
-void Definition::CollectStates(State* state) {
-  states_.push_back(state);
-  for (State* child : state->children_) CollectStates(child);
+std::vector<State*> Definition::States() const {
+  if (IsComplete()) return states_;
+  std::vector<State*> states;
+  CollectStates(root_, states);
+  return states;
 }
 
 void Definition::CheckStructure() const {
@@ -224,7 +232,7 @@ void Definition::Complete() {
 
   states_.clear();
   states_.reserve(owned_states_.size());
-  CollectStates(root_);
+  CollectStates(root_, states_);
   CheckStructure();
 
   or_states_.clear();

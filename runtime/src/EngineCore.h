@@ -29,11 +29,11 @@ class EngineCore {
  private:
   // What every step reads, first (a step takes a few of the object's cache lines).
 
-  // Guards the configuration (active flags, active children), the observer and Activate.
-  // Workers never take it.
+  // Guards the configuration (the active children), the observer and Activate. Workers never
+  // take it.
   mutable EngineLock engine_lock_;
-  // One block per statechart (Definition::Layout): flags and active children of its states,
-  // its regions' running counts and blackboards, its activities' counts, the parts it made.
+  // One block per statechart (Definition::Layout): the active children of its OR states, its
+  // regions' running counts and blackboards, its activities' counts, the parts it made.
   unsigned char* block_ = nullptr;
   std::atomic<bool>* activity_runs_ = nullptr;  // by BASIC state: the last run has not ended
   std::atomic<State*>* active_child_ = nullptr;  // by OR state
@@ -42,8 +42,7 @@ class EngineCore {
   std::uint32_t* relaunches_ = nullptr;
   kse::messaging::Blackboard* boards_ = nullptr;
   OrState* root_;
-  std::atomic<bool> activated_{false};
-  std::atomic<bool> root_entered_{false};
+  std::atomic<bool> activated_{false};  // set as the root is entered
   bool inline_runs_last_;  // Options::inline_activities_last_until_next_run
   // Near a RunUntilStable() bound every segment fired goes into loop_record_ (one test per Fire()).
   bool recording_loop_ = false;
@@ -105,7 +104,7 @@ class EngineCore {
   // A state is active when each OR state above it has it (or the state above it) as its active
   // child, and the root has been entered: the active children are the whole configuration.
   bool IsActive(const State* state) const noexcept {
-    if (!root_entered_.load(std::memory_order_acquire)) return false;
+    if (!IsActivated()) return false;
     for (const State* s = state; s->parent_ != nullptr; s = s->parent_) {
       if (s->parent_or_slot_ != 0 && active_child_[s->parent_or_slot_ - 1].load(std::memory_order_relaxed) != s) {
         return false;
@@ -183,6 +182,9 @@ class EngineCore {
   void MakeBlock();
   template <class I>
   void MakePart(const Part<I>& part, std::size_t at, std::vector<std::unique_ptr<I>>& owned);
+  /// Destroys, last made first, the parts of the first `transitions` transitions and
+  /// `activities` BASIC states, and the first `boards` region blackboards.
+  void DestroyMade(std::size_t transitions, std::size_t activities, std::size_t boards) noexcept;
   void DestroyBlock() noexcept;
   void CallUserInits();
 

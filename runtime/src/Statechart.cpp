@@ -357,21 +357,7 @@ void Statechart::Wake() { core_->Wake(); }
 kse::messaging::MessageHub& Statechart::Hub() const noexcept { return core_->hub_; }
 Blackboard& Statechart::RootBlackboard() const noexcept { return core_->root_blackboard_; }
 const Options& Statechart::GetOptions() const noexcept { return core_->options_; }
-std::vector<State*> Statechart::States() const {
-  const Definition& definition = core_->GetDefinition();
-  if (definition.IsComplete()) return definition.States();
-  // Not complete yet: the tree as built so far, in document order.
-  std::vector<State*> out;
-  std::vector<State*> pending{definition.Root()};
-  while (!pending.empty()) {
-    State* state = pending.back();
-    pending.pop_back();
-    out.push_back(state);
-    const auto& children = state->Children();
-    for (auto it = children.rbegin(); it != children.rend(); ++it) pending.push_back(*it);
-  }
-  return out;
-}
+std::vector<State*> Statechart::States() const { return core_->GetDefinition().States(); }
 std::vector<TransitionSegmentBase*> Statechart::Transitions() const {
   return core_->GetDefinition().Transitions();
 }

@@ -61,16 +61,7 @@ void EngineCore::MakeBlock() {
       }
     }
   } catch (...) {
-    while (transitions > 0) {
-      TransitionSegmentBase* t = d.owned_transitions_[--transitions].get();
-      if (t->action_.Maker()) ActionOf(t)->~IAction();
-      if (t->condition_.Maker()) ConditionOf(t)->~ICondition();
-    }
-    while (activities > 0) {
-      BasicState* state = d.basic_states_[--activities];
-      if (state->activity_.Maker()) ActivityOf(state)->~IActivity();
-    }
-    while (boards > 0) boards_[--boards].~Blackboard();
+    DestroyMade(transitions, activities, boards);
     ::operator delete(block_, std::align_val_t(d.block_align_));
     block_ = nullptr;
     throw;
@@ -90,22 +81,30 @@ void EngineCore::MakePart(const Part<I>& part, std::size_t at, std::vector<std::
   }
 }
 
-void EngineCore::DestroyBlock() noexcept {
-  if (block_ == nullptr) return;
+void EngineCore::DestroyMade(std::size_t transitions, std::size_t activities,
+                             std::size_t boards) noexcept {
   const Definition& d = *definition_;
   // Transitions first (their conditions and actions may refer to blackboards), then the
   // activities, then the blackboards, as the states that held them went in reverse order.
-  for (auto it = d.owned_transitions_.rbegin(); it != d.owned_transitions_.rend(); ++it) {
-    if ((*it)->action_.Maker()) ActionOf(it->get())->~IAction();
-    if ((*it)->condition_.Maker()) ConditionOf(it->get())->~ICondition();
+  while (transitions > 0) {
+    TransitionSegmentBase* t = d.owned_transitions_[--transitions].get();
+    if (t->action_.Maker()) ActionOf(t)->~IAction();
+    if (t->condition_.Maker()) ConditionOf(t)->~ICondition();
   }
   given_actions_.clear();
   given_conditions_.clear();
-  for (auto it = d.basic_states_.rbegin(); it != d.basic_states_.rend(); ++it) {
-    if ((*it)->activity_.Maker()) ActivityOf(*it)->~IActivity();
+  while (activities > 0) {
+    BasicState* state = d.basic_states_[--activities];
+    if (state->activity_.Maker()) ActivityOf(state)->~IActivity();
   }
   given_activities_.clear();
-  for (std::size_t i = d.regions_.size() - 1; i > 0; --i) boards_[i - 1].~Blackboard();
+  while (boards > 0) boards_[--boards].~Blackboard();
+}
+
+void EngineCore::DestroyBlock() noexcept {
+  if (block_ == nullptr) return;
+  const Definition& d = *definition_;
+  DestroyMade(d.owned_transitions_.size(), d.basic_states_.size(), d.regions_.size() - 1);
   ::operator delete(block_, std::align_val_t(d.block_align_));
   block_ = nullptr;
 }
@@ -179,8 +178,6 @@ void EngineCore::Activate() {
   if (block_ == nullptr) MakeBlock();
   const Definition& d = *definition_;
 
-  // One watchdog slot per activity; its name is asked once, here, so that the watchdog never
-  // calls user code.
   // The activities' names, asked once per definition (a statechart's first activation), so
   // that the watchdog never calls user code: an activity's class gives its name.
   std::call_once(d.activity_names_once_, [&] {
@@ -196,8 +193,8 @@ void EngineCore::Activate() {
       d.activity_names_.push_back(std::move(name));
     }
   });
+  // One watchdog slot per activity. Inline activities are watched through the engine's own slot (SlotOf).
   activity_slot_count_ = d.basic_states_.size();
-  // Inline activities are watched through the engine's own slot (SlotOf).
   if (UsesPool() && activity_slot_count_ > 0) {
     activity_slots_ = std::make_unique<CallSlot[]>(activity_slot_count_);
   }
@@ -213,7 +210,6 @@ void EngineCore::Activate() {
   watched_ = true;
   CallUserInits();
   activated_.store(true, std::memory_order_release);
-  root_entered_.store(true, std::memory_order_release);
   EnterDefault(root_);
   {
     std::lock_guard<std::mutex> wake(wake_mutex_);

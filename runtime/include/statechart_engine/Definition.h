@@ -70,8 +70,8 @@ class Definition {
   void Complete();
   bool IsComplete() const noexcept { return complete_.load(std::memory_order_acquire); }
 
-  /// Every state in document order, the root first (once complete).
-  const std::vector<State*>& States() const noexcept { return states_; }
+  /// Every state in document order, the root first (before Complete(), the tree built so far).
+  std::vector<State*> States() const;
   /// Every transition in model order.
   std::vector<TransitionSegmentBase*> Transitions() const;
   /// True when a part was given as an object (see Part): only one statechart can be made.
@@ -82,7 +82,6 @@ class Definition {
 
   void AdoptState(std::unique_ptr<State> state);
   void AdoptTransition(std::unique_ptr<TransitionSegmentBase> transition);
-  void CollectStates(State* state);
   void CheckStructure() const;
   void ComputeTransition(TransitionSegmentBase& transition);
   void Layout();
