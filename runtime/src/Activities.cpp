@@ -23,21 +23,10 @@ thread_local std::uint64_t current_loop_generation = 0;
 // Activities
 // ---------------------------------------------------------------------------------------------
 
-void EngineCore::Launch(BasicState* state) {
-  IActivity* activity = ActivityOf(state);
-  if (activity == nullptr) {
-    return;
-  }
-  // Only a step (under the engine's lock) launches: a plain increment, no locked instruction.
-  std::atomic<std::uint32_t>& launches = launches_[state->slot_];
-  launches.store(launches.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  if (pool_) {
-    LaunchOnPool(state, activity);
-    return;
-  }
+void EngineCore::LaunchInlineHeld(BasicState* state, IActivity* activity) {
   RunActivity(state, activity);
   UnwindIfGivenUp();
-  if (inline_runs_last_ && current_loop_core != this) {
+  if (current_loop_core != this) {
     // The run is over, but the region behaves as if it went on until the next call, as a
     // worker's run would: the region waits, the rest of the chart steps on.
     // Not among running_activities_: nothing runs, nothing is to be waited for.

@@ -223,6 +223,17 @@ void Definition::ComputeTransition(TransitionSegmentBase& t) {
   std::reverse(entry_paths_.begin() + static_cast<std::ptrdiff_t>(first), entry_paths_.end());
   t.entry_length_ = static_cast<std::uint32_t>(entry_paths_.size() - first);
   t.scope_ = a->region_;
+  auto leaf = [](const State* s) {
+    return s->kind_ != StateKind::Or && s->kind_ != StateKind::And && s->kind_ != StateKind::Condition;
+  };
+  t.between_siblings_ = exit_top == source && t.entry_length_ == 1 && leaf(source) && leaf(target);
+  State* deepest = target;
+  while (deepest != nullptr && deepest->kind_ == StateKind::Or) deepest = static_cast<OrState*>(deepest)->start_;
+  bool one_path = deepest != nullptr && deepest->kind_ != StateKind::And && deepest->kind_ != StateKind::Condition;
+  for (State* s = target->parent_; one_path && s != nullptr; s = s->parent_) {
+    one_path = s->kind_ != StateKind::And;
+  }
+  t.leaf_after_ = one_path ? deepest : nullptr;
 }
 
 void Definition::Complete() {

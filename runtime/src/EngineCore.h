@@ -42,6 +42,9 @@ class EngineCore {
   std::uint32_t* relaunches_ = nullptr;
   kse::messaging::Blackboard* boards_ = nullptr;
   OrState* root_;
+  // The deepest active state while the configuration is one path from the root (no AND state
+  // on it), as the last transition fired left it; null when a step must walk down from the root.
+  State* active_leaf_ = nullptr;
   std::atomic<bool> activated_{false};  // set as the root is entered
   bool inline_runs_last_;  // Options::inline_activities_last_until_next_run
   // Near a RunUntilStable() bound every segment fired goes into loop_record_ (one test per Fire()).
@@ -189,27 +192,69 @@ class EngineCore {
   void CallUserInits();
 
   // Stepping
-  bool StepRoot();
+  bool StepRoot() {
+    // Written only under engine_lock_: a plain increment, no locked read-modify-write.
+    step_number_.store(step_number_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+    if (State* leaf = active_leaf_) return StepUp(leaf);
+    return StepState(root_);
+  }
+  /// StepState(root_) when the configuration is one path from the root down to `leaf`: every
+  /// state on it is in the root's region, and each tries its transitions, innermost first.
+  bool StepUp(State* leaf);
   bool StepState(State* state);
   bool StepAnd(State* state);
   /// OR states walked down in a loop by StepState; deeper ones recurse.
   static constexpr std::size_t kUnrolledDepth = 16;
-  bool TryTransitions(State* state);
+  /// Fires the first transition out of the state whose guard holds, unless its region runs.
+  bool TryTransitions(State* state) { return !RegionRunningOf(state) && TryOutgoing(state); }
+  bool TryOutgoing(State* state);
   /// A guard into a CONDITION connector held: fires the chain through it if one can go on.
   bool FireThroughConnectors(TransitionSegmentBase* transition);
-  bool EvalGuard(TransitionSegmentBase* transition);
+  bool EvalGuard(TransitionSegmentBase* transition) {
+    ICondition* condition = ConditionOf(transition);
+    return condition == nullptr || Evaluate(transition, condition);
+  }
+  /// Calls the guard: a guard that throws is taken as false, and reported.
+  bool Evaluate(TransitionSegmentBase* transition, ICondition* condition);
   bool FindChain(State* connector, std::size_t depth);
   void Fire(TransitionSegmentBase* transition);
 
   // Entering and leaving
-  void Enter(State* state);
+  /// Makes the state its parent's active child and calls its OnEntry(), if overridden.
+  void Enter(State* state) {
+    SetActiveChild(state->parent_or_slot_, state);
+    if (state->calls_entry_) CallEntry(state);
+  }
+  /// Calls the state's OnExit(), if overridden, and leaves it (its inside already left).
+  void Leave(State* state) {
+    if (state->calls_exit_) CallExit(state);
+    SetActiveChild(state->parent_or_slot_, nullptr);
+  }
+  void CallEntry(State* state);
+  void CallExit(State* state);
   void Complete(State* state);
   void EnterDefault(State* state);
   void EnterAlong(State* const* path, std::size_t length, std::size_t index);
   void Exit(State* state);
 
   // Activities
-  void Launch(BasicState* state);
+  void Launch(BasicState* state) {
+    IActivity* activity = ActivityOf(state);
+    if (activity == nullptr) return;
+    // Only a step (under the engine's lock) launches: a plain increment, no locked instruction.
+    std::atomic<std::uint32_t>& launches = launches_[state->slot_];
+    launches.store(launches.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+    if (pool_) {
+      LaunchOnPool(state, activity);
+    } else if (inline_runs_last_) {
+      LaunchInlineHeld(state, activity);
+    } else {
+      RunActivity(state, activity);
+      UnwindIfGivenUp();
+    }
+  }
+  /// Options::inline_activities_last_until_next_run: runs the activity, then holds its region.
+  void LaunchInlineHeld(BasicState* state, IActivity* activity);
   void LaunchOnPool(BasicState* state, IActivity* activity);
   void RunActivity(BasicState* state, IActivity* activity);
   void ActivityFailed(BasicState* state, const char* failure, const std::string& message);

@@ -85,12 +85,6 @@ bool EngineCore::Step() {
   return StepRoot();
 }
 
-bool EngineCore::StepRoot() {
-  // Written only under engine_lock_: a plain increment, no locked read-modify-write.
-  step_number_.store(step_number_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  return StepState(root_);
-}
-
 // Monas' Step() of each kind of state. A region's running flag stops everything in the region;
 // the composite's own transitions come after its inside could not move, whatever is active in
 // it (not only its END).
@@ -116,13 +110,25 @@ bool EngineCore::StepState(State* state) {
       if (StepAnd(state)) return true;
       break;
     }
-    if (state->kind_ != StateKind::End && TryTransitions(state)) return true;
+    // A leaf's region is its parent's, whose running count was just read as zero; only a step
+    // (this one) could have raised it since.
+    if (state->kind_ != StateKind::End && TryOutgoing(state)) return true;
     break;
   }
   // Back up: each OR state on the path tries its own once its inside could not move
   // (TryTransitions looks at its region's running flag again, as the recursion did).
   while (depth > 0) {
     if (TryTransitions(path[--depth])) return true;
+  }
+  return false;
+}
+
+bool EngineCore::StepUp(State* leaf) {
+  // The count cannot rise during the step until something fires (only a step launches), so one
+  // look serves every state on the path.
+  if (RegionRunningOf(root_)) return false;
+  for (State* state = leaf; state != root_; state = state->parent_) {
+    if (state->kind_ != StateKind::End && TryOutgoing(state)) return true;
   }
   return false;
 }
@@ -143,11 +149,7 @@ bool EngineCore::StepAnd(State* state) {
   return !running && TryTransitions(state);
 }
 
-bool EngineCore::EvalGuard(TransitionSegmentBase* transition) {
-  ICondition* condition = ConditionOf(transition);
-  if (condition == nullptr) {
-    return true;
-  }
+bool EngineCore::Evaluate(TransitionSegmentBase* transition, ICondition* condition) {
   bool holds = false;
   try {
     WatchedCall watched(engine_slot_, CallKind::Guard, transition);
@@ -183,10 +185,7 @@ bool EngineCore::FindChain(State* connector, std::size_t depth) {
   return false;
 }
 
-bool EngineCore::TryTransitions(State* state) {
-  if (RegionRunningOf(state)) {
-    return false;
-  }
+bool EngineCore::TryOutgoing(State* state) {
   for (TransitionSegmentBase* transition : state->outgoing_) {
     if (!EvalGuard(transition)) continue;
     if (transition->target_->kind_ != StateKind::Condition) {
@@ -218,7 +217,17 @@ bool EngineCore::FireThroughConnectors(TransitionSegmentBase* transition) {
 }
 
 void EngineCore::Fire(TransitionSegmentBase* transition) {
-  Exit(transition->exit_top_);
+  // Unknown until the configuration is whole again; a step taken by user code during this one
+  // (the lock is recursive) leaves it unknown.
+  active_leaf_ = nullptr;
+  const std::size_t step = step_number_.load(std::memory_order_relaxed);
+  // Most transitions of a behaviour go from one state to a sibling: no walk up or down.
+  const bool between_siblings = transition->between_siblings_;
+  if (between_siblings) {
+    Leave(transition->source_);
+  } else {
+    Exit(transition->exit_top_);
+  }
   if (IAction* action = ActionOf(transition)) {
     try {
       WatchedCall watched(engine_slot_, CallKind::Action, transition);
@@ -232,7 +241,13 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
     }
     UnwindIfGivenUp();
   }
-  EnterAlong(transition->entry_path_, transition->entry_length_, 0);
+  if (between_siblings) {
+    State* target = transition->target_;
+    Enter(target);
+    if (target->kind_ == StateKind::Basic) Launch(static_cast<BasicState*>(target));
+  } else {
+    EnterAlong(transition->entry_path_, transition->entry_length_, 0);
+  }
   if (recording_loop_) loop_record_.push_back(transition);
   transitions_taken_.store(transitions_taken_.load(std::memory_order_relaxed) + 1,
                           std::memory_order_relaxed);
@@ -250,15 +265,14 @@ void EngineCore::Fire(TransitionSegmentBase* transition) {
     }
     UnwindIfGivenUp();
   }
+  if (step_number_.load(std::memory_order_relaxed) == step) active_leaf_ = transition->leaf_after_;
 }
 
 // ---------------------------------------------------------------------------------------------
 // Entering and leaving
 // ---------------------------------------------------------------------------------------------
 
-void EngineCore::Enter(State* state) {
-  SetActiveChild(state->parent_or_slot_, state);
-  if (!state->calls_entry_) return;
+void EngineCore::CallEntry(State* state) {
   try {
     WatchedCall watched(engine_slot_, CallKind::Entry, state);
     state->OnEntry();
@@ -328,20 +342,21 @@ void EngineCore::Exit(State* state) {
       }
     }
   }
-  if (state->calls_exit_) {
-    try {
-      WatchedCall watched(engine_slot_, CallKind::Exit, state);
-      state->OnExit();
-    } catch (const std::exception& e) {
-      ++action_failures_;
-      Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw: " + e.what());
-    } catch (...) {
-      ++action_failures_;
-      Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw");
-    }
-    UnwindIfGivenUp();
+  Leave(state);
+}
+
+void EngineCore::CallExit(State* state) {
+  try {
+    WatchedCall watched(engine_slot_, CallKind::Exit, state);
+    state->OnExit();
+  } catch (const std::exception& e) {
+    ++action_failures_;
+    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw: " + e.what());
+  } catch (...) {
+    ++action_failures_;
+    Report(EngineReport::Kind::Failure, "OnExit of " + Describe(state) + " threw");
   }
-  SetActiveChild(state->parent_or_slot_, nullptr);
+  UnwindIfGivenUp();
 }
 
 }  // namespace statechart_engine::detail

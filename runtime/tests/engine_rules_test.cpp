@@ -611,6 +611,72 @@ TEST_F(EngineRules, RegionsExitInReverseOrderWhenTheAndStateIsLeft) {
                                         "exit Both", "action", "enter After"));
 }
 
+// A step starts where the last transition left the configuration: from the deepest state when
+// it is one path from the root, from the root when an AND state is active. Round and round
+// between an AND state and an OR state, then out of a region, every step's states are checked.
+TEST_F(EngineRules, EachStepStartsFromTheConfigurationTheLastTransitionLeft) {
+  Statechart chart("Root", hub, Inline());
+  auto regions = BuildTwoRegions(chart);
+  auto* x1 = chart.Add<BasicState>("X1", regions.r1);
+  auto* y = chart.Add<BasicState>("Y", regions.r2);
+  auto* q = chart.Add<OrState>("Q", &chart);
+  auto* qStart = chart.Add<StartState>("Q_1", q);
+  auto* z = chart.Add<BasicState>("Z", q);
+  auto* out = chart.Add<BasicState>("Out", &chart);
+  auto leave = Flag(false);
+  chart.AddTransition(regions.r1Start, x1);
+  chart.AddTransition(regions.r2Start, y);
+  chart.AddTransition(x1, out, When(leave));
+  chart.AddTransition(regions.both, q);
+  chart.AddTransition(qStart, z);
+  chart.AddTransition(q, regions.both);
+  chart.Activate();
+  for (int round = 0; round < 2; ++round) {
+    ASSERT_TRUE(chart.Step());
+    EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "R1_1", "R2", "R2_1"));
+    ASSERT_TRUE(chart.Step());  // both regions move in one step
+    EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Both", "R1", "X1", "R2", "Y"));
+    ASSERT_TRUE(chart.Step());
+    EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Q", "Q_1"));
+    ASSERT_TRUE(chart.Step());
+    EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Q", "Z"));
+  }
+  ASSERT_TRUE(chart.Step());  // Q -> Both
+  ASSERT_TRUE(chart.Step());
+  leave->store(true);
+  ASSERT_TRUE(chart.Step());  // out of region R1: the whole AND state is left
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "Out"));
+  EXPECT_FALSE(chart.Step());
+  EXPECT_EQ(chart.TransitionsTaken(), 14U);  // a step of both regions takes two
+}
+
+// User code that steps the statechart while a transition fires (its lock is recursive): the
+// next step starts from what that inner step left, not from the outer transition's target.
+TEST_F(EngineRules, AStepTakenByUserCodeDuringATransitionIsNotUndone) {
+  Statechart chart("Root", hub, Inline());
+  auto* start = chart.Add<StartState>("Root_1", &chart);
+  auto* a = chart.Add<BasicState>("A", &chart);
+  auto* b = chart.Add<BasicState>("B", &chart);
+  auto* c = chart.Add<BasicState>("C", &chart);
+  auto* d = chart.Add<BasicState>("D", &chart);
+  chart.AddTransition(start, a);
+  chart.AddTransition(a, b);
+  chart.AddTransition(c, d);
+  chart.AddTransition(b, c);
+  std::vector<std::string> fired;
+  chart.SetObserver([&](const TransitionSegmentBase& t) {
+    fired.push_back(t.Source()->Name() + ">" + t.Target()->Name());
+    if (t.Target() == b) chart.Step();  // B -> C, inside A -> B
+  });
+  chart.Activate();
+  ASSERT_TRUE(chart.Step());
+  ASSERT_TRUE(chart.Step());
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "C"));
+  ASSERT_TRUE(chart.Step());
+  EXPECT_THAT(chart.ActiveStates(), ElementsAre("Root", "D"));
+  EXPECT_THAT(fired, ElementsAre("Root_1>A", "A>B", "B>C", "C>D"));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Timeouts (ManualClock)
 // ---------------------------------------------------------------------------------------------

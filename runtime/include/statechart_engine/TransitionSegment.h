@@ -53,6 +53,12 @@ class TransitionSegmentBase {
   std::size_t condition_at_ = 0;
   std::size_t action_at_ = 0;
   std::uint32_t entry_length_ = 0;
+  // From a BASIC or START state to a BASIC or END sibling (once complete): firing leaves and
+  // enters one state each, with nothing above or below them to walk.
+  bool between_siblings_ = false;
+  // When the configuration after firing is one path from the root (no AND state on it): its
+  // deepest state, where the next step starts (once complete); null otherwise.
+  State* leaf_after_ = nullptr;
   State* lca_ = nullptr;
   OrState* scope_ = nullptr;
   Part<ICondition> condition_;
