@@ -98,6 +98,9 @@ echo "== A short match (log and picture under $out/match.*) and the simulator's 
 "$out/examples/kse-match" --seed 1 --half 120 --log "$out/match.jsonl" --svg "$out/match.svg"
 "$out/examples/match_bench" 1
 
+echo "== Live monitor: kse serve's page watches home-1 of a running seeded match (kse-match --monitor) in headless Chromium (delay figures only)"
+KSE_MATCH="$out/examples/kse-match" tests/org.kse.diagram.e2e/run.sh tests/16-monitor.test.mjs
+
 echo "== A project outside the repository builds its behaviour with the runtime's CMake package (kse_add_statechart)"
 tests/cmake-package/run.sh "$out/runtime-prefix" "$out/cmake-package"
 

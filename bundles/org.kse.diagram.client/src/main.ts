@@ -17,6 +17,7 @@ import { createKseDiagramContainer } from './di.config';
 import { createBaseDiv, diagramPage } from './diagram-page';
 import { setExportBaseName } from './export';
 import { DIAGRAM_TYPE } from './model';
+import { installMonitor, readMonitorParameters } from './monitor';
 import { newClientId, readPageParameters } from './page';
 import { followEditorState } from './page-state';
 import { startPage } from './startup';
@@ -25,6 +26,8 @@ import { installToolbar } from './toolbar';
 import './kse.css';
 
 const parameters = readPageParameters(window.location);
+// opened to watch a running match: the diagram is only looked at (monitor.ts)
+const monitor = readMonitorParameters(window.location);
 const clientId = newClientId();
 setExportBaseName(parameters.modelName);
 document.title = `${parameters.modelName} – KSE`;
@@ -32,7 +35,13 @@ createBaseDiv(clientId);
 
 const connection = new ServerConnection(parameters);
 const container = createKseDiagramContainer(
-    { clientId, diagramType: DIAGRAM_TYPE, sourceUri: parameters.model, glspClientProvider: () => connection.client },
+    {
+        clientId,
+        diagramType: DIAGRAM_TYPE,
+        sourceUri: parameters.model,
+        glspClientProvider: () => connection.client,
+        editMode: monitor ? 'readonly' : 'editable'
+    },
     { popupOpenDelay: 500, popupCloseDelay: 300 }
 );
 const page = diagramPage(parameters, clientId, container);
@@ -41,5 +50,8 @@ followEditorState(page, connection);
 const startup = startPage(page, connection);
 const toolbar = installToolbar(page);
 installTestApi(page, startup.ready, toolbar);
+if (monitor) {
+    window.kse.monitor = installMonitor(page, startup.ready, monitor);
+}
 
 connection.connect(page, startup.isShown);

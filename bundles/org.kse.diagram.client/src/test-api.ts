@@ -7,6 +7,7 @@ import { Container } from 'inversify';
 import { DiagramPage } from './diagram-page';
 import { exportSvg, svgToPng } from './export';
 import { ElementJson, toJson } from './model-json';
+import { MonitorHandle } from './monitor';
 import { StatusEntry, statusHistory } from './status-line';
 import { Toolbar } from './toolbar';
 
@@ -39,6 +40,8 @@ export interface KseHandle {
     select(ids: string[]): Promise<void>;
     /** The dependency injection container (for debugging). */
     container: Container;
+    /** The live monitor, when the page was opened to watch a match (&monitor=…). */
+    monitor?: MonitorHandle;
 }
 
 declare global {

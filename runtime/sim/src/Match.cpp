@@ -70,9 +70,11 @@ Match::Match(MatchConfig config)
 			if (!player_config.controller) {
 				player->robot = std::make_unique<robot::Robot>(player_config.behaviour, clock_, reports_.For(player->id, player_config.behaviour));
 				Player* raw = player.get();
-				player->robot->Chart().SetObserver([this, raw](const statechart_engine::TransitionSegmentBase& transition) {
+				const std::size_t index = players_.size();
+				player->robot->Chart().SetObserver([this, raw, index](const statechart_engine::TransitionSegmentBase& transition) {
 					raw->taken.push_back(&transition.Name());
 					raw->last_transition = Time();
+					for (auto* observer : observers_) observer->OnTransition(*this, index, transition);
 				});
 			}
 			Body body;
@@ -272,7 +274,10 @@ void Match::Step() {
 	if (!started_) Start();
 	if (link_) ExchangeWithGameController();
 	for (std::size_t i = 0; i < players_.size(); ++i) {
-		if ((ticks_ + i) % kTicksPerFrame == 0) Think(i);
+		if ((ticks_ + i) % kTicksPerFrame == 0) {
+			Think(i);
+			for (auto* observer : observers_) observer->OnDecision(*this, i);
+		}
 	}
 	world_.Step(kTick);
 	for (const auto& event : world_.Events()) {
@@ -292,15 +297,21 @@ void Match::Step() {
 		for (auto* observer : observers_) observer->OnFrame(*this);
 		for (auto& player : players_) player->taken.clear();
 	}
+	for (auto* observer : observers_) observer->OnTick(*this);
 }
 
-void Match::Run(double seconds, const std::function<void(const Match&)>& progress, bool realtime) {
+void Match::Run(double seconds, const std::function<void(const Match&)>& progress, double speed) {
 	const std::uint64_t end = seconds > 0 ? ticks_ + static_cast<std::uint64_t>(std::llround(seconds / kTick)) : UINT64_MAX;
 	const auto wall_start = std::chrono::steady_clock::now();
 	const std::uint64_t first = ticks_;
+	// wall time of a tick at this speed; each tick waits for its own point from the start, so a
+	// late tick does not push back the rest
+	const std::chrono::duration<double> tick_wall(speed > 0 ? kTick / speed : 0);
 	while (ticks_ < end && !(started_ && referee_.GameOver())) {
 		Step();
-		if (realtime) std::this_thread::sleep_until(wall_start + std::chrono::milliseconds(10 * (ticks_ - first)));
+		if (speed > 0) {
+			std::this_thread::sleep_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(tick_wall * static_cast<double>(ticks_ - first)));
+		}
 		if (progress && ticks_ % 100 == 0) progress(*this);
 	}
 	End();

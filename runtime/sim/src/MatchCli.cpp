@@ -15,6 +15,7 @@
 #include <kse/sim/GameControllerLink.h>
 #include <kse/sim/LogFile.h>
 #include <kse/sim/MatchLog.h>
+#include <kse/sim/MatchMonitor.h>
 #include <kse/sim/MatchSupervisor.h>
 
 namespace kse::sim {
@@ -34,7 +35,14 @@ Plays a simulated RoboCup SPL match between the registered behaviours of this pr
   --log FILE         write the JSON-lines log of the match, as it runs (whole lines, at least every
                      second: after a crash, a hang or Ctrl+C it holds the match up to then)
   --svg FILE         write a picture of the match
-  --realtime         run at real speed (to watch it) instead of as fast as possible
+  --realtime         run at real speed (to watch it) instead of as fast as possible; --speed 1
+  --speed F          run at F times real speed (0.01 to 1000; e.g. 10: a 10 min half in 1 min)
+  --monitor          let a live monitor watch the match (docs/monitor.md): listens on 127.0.0.1,
+                     on a port the system chooses, and prints before the start
+                     "kse-match: monitor on 127.0.0.1:PORT token TOKEN" on standard error
+  --monitor-port N   the same on port N
+  --monitor-wait     with --monitor: start the match only once a monitor client has subscribed
+                     (at most 60 s, then it starts anyway)
   --hang-limit SECONDS  end the match (exit status 3) when a robot's behaviour has been in one
                      call this long (default 5; 0: wait forever); the engine's watchdog names
                      the call after 1 s
@@ -126,7 +134,10 @@ int RunMatchCli(int argc, char** argv) {
 	std::string log_path, svg_path;
 	double duration = 0;
 	double hang_limit = 5;
-	bool realtime = false, quiet = false, gamecontroller = false;
+	double speed = 0;  // 0: as fast as it can
+	bool quiet = false, gamecontroller = false;
+	bool monitor = false, monitor_wait = false;
+	int monitor_port = 0;
 	try {
 		for (int i = 1; i < argc; ++i) {
 			const std::string option = argv[i];
@@ -161,7 +172,16 @@ int RunMatchCli(int argc, char** argv) {
 			} else if (option == "--hang-limit") {
 				hang_limit = ParseNumber(option, value(), 0, 3600);
 			} else if (option == "--realtime") {
-				realtime = true;
+				speed = 1;
+			} else if (option == "--speed") {
+				speed = ParseNumber(option, value(), 0.01, 1000);
+			} else if (option == "--monitor") {
+				monitor = true;
+			} else if (option == "--monitor-port") {
+				monitor = true;
+				monitor_port = static_cast<int>(ParseNumber(option, value(), 1, 65535));
+			} else if (option == "--monitor-wait") {
+				monitor_wait = true;
 			} else if (option == "--gamecontroller") {
 				gamecontroller = true;
 			} else if (option == "--home-number") {
@@ -178,6 +198,7 @@ int RunMatchCli(int argc, char** argv) {
 		config.away.players = ParseTeam(away.empty() ? home : away);
 		if (config.home.players.empty() && config.away.players.empty()) throw UsageError("both teams are empty");
 		if (config.home.number == config.away.number) throw UsageError("the teams need different numbers");
+		if (monitor_wait && !monitor) throw UsageError("--monitor-wait needs --monitor or --monitor-port");
 	} catch (const UsageError& error) {
 		std::cerr << "kse-match: " << error.what() << "\n" << kUsage;
 		return 2;
@@ -206,21 +227,48 @@ int RunMatchCli(int argc, char** argv) {
 			link = std::make_unique<gc::GameControllerLink>(gc::GameControllerLink::Options{});
 			match.Listen(*link);
 			match.AddObserver(notices);
-			realtime = true;  // a GameController runs in real time
+			speed = 1;  // a GameController runs in real time
 			if (!quiet) {
 				std::cerr << "kse-match: following the GameController on 127.0.0.1:" << link->ListenPort() << " as teams " << config.home.number
 				          << " (home) and " << config.away.number << " (away)\n";
 			}
 		}
+		// Made after the link and the other observers: it sees every event they cause. It only
+		// reads the match, so the log is the same with it.
+		std::unique_ptr<MatchMonitor> watcher;
+		struct Unhook {
+			MatchSupervisor* supervisor = nullptr;
+			~Unhook() {
+				if (supervisor) supervisor->OnAbort({});  // before the monitor goes: the supervisor outlives it
+			}
+		} unhook;
+		if (monitor) {
+			robot::MonitorServer::Options options;
+			options.port = static_cast<std::uint16_t>(monitor_port);
+			options.notice = [](const std::string& line) { std::cerr << "kse-match: monitor: " << line << "\n"; };
+			watcher = std::make_unique<MatchMonitor>(match, options);
+			match.AddObserver(*watcher);
+			MatchMonitor* raw = watcher.get();
+			supervisor.OnAbort([raw](const std::string& reason, const std::string& robot, const std::string& detail) { raw->Aborted(reason, robot, detail); });
+			unhook.supervisor = &supervisor;
+			// even with --quiet: without it nobody can connect
+			std::cerr << "kse-match: " << watcher->Server().Address() << std::endl;
+			if (monitor_wait && !watcher->WaitForSubscriber(std::chrono::seconds(60))) {
+				std::cerr << "kse-match: no monitor client subscribed within 60 s; the match starts anyway" << std::endl;
+			}
+		}
 		const auto wall_start = std::chrono::steady_clock::now();
-		double next_report = realtime ? 5 : 60;
+		const bool paced = speed > 0;
+		// a progress line every 5 s of wall time when paced
+		const double report_every = paced ? 5 * speed : 60;
+		double next_report = report_every;
 		match.Run(duration, [&](const Match& m) {
 			if (quiet || m.Time() < next_report) return;
-			next_report = m.Time() + (realtime ? 5 : 60);
+			next_report = m.Time() + report_every;
 			const auto& score = m.GetReferee().Score();
 			std::cerr << "  " << Fixed(m.Time(), 0) << " s  " << ToString(m.GetReferee().State()) << "  " << score[0] << ":" << score[1]
 			          << "  " << Fixed(m.GetReferee().SecsRemaining(), 0) << " s left\n";
-		}, realtime);
+		}, speed);
 		const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 		if (!svg_path.empty()) {
 			std::ostringstream svg;

@@ -45,10 +45,10 @@ std::string Score(const Match& match) {
 
 }  // namespace
 
-void JsonLinesLog::OnStart(const Match& match) {
+std::string MatchRecordFields(const Match& match) {
 	std::ostringstream line;
 	const auto& config = match.Config();
-	line << "{\"type\":\"match\",\"version\":1,\"seed\":" << config.seed << ",\"tick\":" << Fixed(Match::kTick)
+	line << "\"version\":1,\"seed\":" << config.seed << ",\"tick\":" << Fixed(Match::kTick)
 	     << ",\"field\":{\"length\":" << Fixed(2 * field::kHalfLength) << ",\"width\":" << Fixed(2 * field::kHalfWidth)
 	     << ",\"goalWidth\":" << Fixed(2 * field::kGoalInnerHalfWidth) << "},\"halfSeconds\":" << Fixed(config.referee.half_seconds, 1)
 	     << ",\"teams\":[";
@@ -64,7 +64,38 @@ void JsonLinesLog::OnStart(const Match& match) {
 		}
 		line << "]}";
 	}
-	line << "]}";
+	line << "]";
+	return line.str();
+}
+
+std::string EventRecord(const Match& match, const MatchEvent& event) {
+	std::ostringstream line;
+	line << "{\"type\":\"event\",\"t\":" << Fixed(event.time, 2) << ",\"event\":" << JsonString(event.type);
+	if (event.team >= 0) line << ",\"team\":" << event.team;
+	if (event.robot >= 0) line << ",\"robot\":" << JsonString(match.RobotId(static_cast<std::size_t>(event.robot)));
+	if (!event.detail.empty()) line << ",\"detail\":" << JsonString(event.detail);
+	line << "}";
+	return line.str();
+}
+
+std::string ResultRecord(const Match& match) {
+	std::ostringstream line;
+	line << "{\"type\":\"result\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(match.GetReferee().State())
+	     << "\",\"score\":" << Score(match) << ",\"stuck\":" << match.StuckCount() << ",\"failed\":" << match.FailedCount() << ",\"failures\":" << match.Failures() << "}";
+	return line.str();
+}
+
+std::string AbortedRecord(double time, const std::string& reason, const std::string& robot, const std::string& detail) {
+	std::ostringstream line;
+	line << "{\"type\":\"aborted\",\"t\":" << Fixed(time, 2) << ",\"reason\":" << JsonString(reason);
+	if (!robot.empty()) line << ",\"robot\":" << JsonString(robot);
+	line << ",\"detail\":" << JsonString(detail) << "}";
+	return line.str();
+}
+
+void JsonLinesLog::OnStart(const Match& match) {
+	std::ostringstream line;
+	line << "{\"type\":\"match\"," << MatchRecordFields(match) << "}";
 	Write(line, 0);
 }
 
@@ -95,18 +126,13 @@ void JsonLinesLog::OnFrame(const Match& match) {
 
 void JsonLinesLog::OnEvent(const Match& match, const MatchEvent& event) {
 	std::ostringstream line;
-	line << "{\"type\":\"event\",\"t\":" << Fixed(event.time, 2) << ",\"event\":" << JsonString(event.type);
-	if (event.team >= 0) line << ",\"team\":" << event.team;
-	if (event.robot >= 0) line << ",\"robot\":" << JsonString(match.RobotId(static_cast<std::size_t>(event.robot)));
-	if (!event.detail.empty()) line << ",\"detail\":" << JsonString(event.detail);
-	line << "}";
+	line << EventRecord(match, event);
 	Write(line, event.time);
 }
 
 void JsonLinesLog::OnEnd(const Match& match) {
 	std::ostringstream line;
-	line << "{\"type\":\"result\",\"t\":" << Fixed(match.Time(), 2) << ",\"state\":\"" << ToString(match.GetReferee().State())
-	     << "\",\"score\":" << Score(match) << ",\"stuck\":" << match.StuckCount() << ",\"failed\":" << match.FailedCount() << ",\"failures\":" << match.Failures() << "}";
+	line << ResultRecord(match);
 	Write(line, match.Time());
 	if (file_) file_->Flush();
 	if (out_) out_->flush();
@@ -121,11 +147,10 @@ void JsonLinesLog::Write(const std::ostringstream& line, double time) {
 }
 
 void JsonLinesLog::Aborted(const std::string& reason, const std::string& robot, const std::string& detail) {
+	const double time = static_cast<double>(LastCentiseconds()) / 100;
 	std::ostringstream line;
-	line << "{\"type\":\"aborted\",\"t\":" << Fixed(static_cast<double>(LastCentiseconds()) / 100, 2) << ",\"reason\":" << JsonString(reason);
-	if (!robot.empty()) line << ",\"robot\":" << JsonString(robot);
-	line << ",\"detail\":" << JsonString(detail) << "}";
-	Write(line, static_cast<double>(LastCentiseconds()) / 100);
+	line << AbortedRecord(time, reason, robot, detail);
+	Write(line, time);
 	if (file_) file_->Flush();
 	if (out_) out_->flush();
 }

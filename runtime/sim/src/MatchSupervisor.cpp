@@ -143,13 +143,25 @@ void MatchSupervisor::Run() {
 	}
 }
 
+void MatchSupervisor::OnAbort(std::function<void(const std::string&, const std::string&, const std::string&)> listener) {
+	std::lock_guard lock(abort_mutex_);
+	on_abort_ = std::move(listener);
+}
+
+void MatchSupervisor::Abort(const std::string& reason, const std::string& robot, const std::string& detail) {
+	std::lock_guard lock(abort_mutex_);
+	if (on_abort_) on_abort_(reason, robot, detail);
+}
+
 void MatchSupervisor::EndForHang(const Stuck& stuck, std::chrono::steady_clock::duration running) {
 	const std::string seconds = Fixed(std::chrono::duration<double>(running).count(), 1);
 	std::cerr << "kse-match: " << stuck.robot << " " << stuck.behaviour << " has been stuck for " << seconds << " s in the " << stuck.call
 	          << " (statechart '" << stuck.chart << "'): the match cannot go on and ends at " << SimTime(log_) << " with exit status "
 	          << kHangExitStatus << (file_ ? "; the log " + file_->Path() + " holds the match up to here" : std::string()) << std::endl;
-	if (log_) log_->Aborted("hang", stuck.robot, stuck.behaviour + " stuck for " + seconds + " s in the " + stuck.call);
+	const std::string detail = stuck.behaviour + " stuck for " + seconds + " s in the " + stuck.call;
+	if (log_) log_->Aborted("hang", stuck.robot, detail);
 	if (file_) file_->Flush();
+	Abort("hang", stuck.robot, detail);
 	std::fflush(nullptr);
 	// Not exit(): the match's thread is still inside the behaviour, and static destructors
 	// would pull its objects from under it.
@@ -161,6 +173,7 @@ void MatchSupervisor::EndForSignal(int signal) {
 	          << (file_ ? "; the log " + file_->Path() + " holds the match up to here" : std::string()) << std::endl;
 	if (log_) log_->Aborted("signal", "", SignalName(signal));
 	if (file_) file_->Flush();
+	Abort("signal", "", SignalName(signal));
 	std::fflush(nullptr);
 	std::_Exit(128 + signal);
 }

@@ -2,7 +2,10 @@
 // and Ctrl+C each end the run with a message naming what happened and a log whose every line
 // is JSON and which holds the match up to that moment; repeated errors are rate-limited and
 // name the robot.
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +13,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -172,6 +176,9 @@ public:
 		std::vector<char*> envp;
 		for (auto& text : environment) envp.push_back(text.data());
 		envp.push_back(nullptr);
+		// an earlier run's files must not be read as this one's before the child truncates them
+		::unlink(err_path_.c_str());
+		::unlink(out_path_.c_str());
 		pid_ = fork();
 		if (pid_ == 0) {
 			const int err = ::open(err_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -217,6 +224,34 @@ private:
 	Clock::time_point started_ = Clock::now();
 	Clock::duration took_{};
 };
+
+/** What a monitor client of a kse-match child saw: it connects as the child's line on standard error says, subscribes and reads to the end. */
+std::vector<std::string> WatchToTheEnd(const Child& run, const std::string& robots) {
+	std::smatch found;
+	std::string err;
+	const std::regex line("kse-match: monitor on 127\\.0\\.0\\.1:([0-9]+) token ([A-Za-z0-9_-]{43})\n");
+	for (const auto end = Clock::now() + std::chrono::seconds(30); Clock::now() < end; std::this_thread::sleep_for(std::chrono::milliseconds(10))) {
+		err = run.Err();
+		if (std::regex_search(err, found, line)) break;
+	}
+	if (found.empty()) {
+		ADD_FAILURE() << "no monitor line on standard error:\n" << err;
+		return {};
+	}
+	const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+	sockaddr_in address{};
+	address.sin_family = AF_INET;
+	address.sin_port = htons(static_cast<std::uint16_t>(std::stoi(found[1].str())));
+	address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+	EXPECT_EQ(::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+	const std::string hello = "{\"type\":\"hello\",\"token\":\"" + found[2].str() + "\"}\n{\"type\":\"subscribe\",\"robots\":[" + robots + "]}\n";
+	EXPECT_EQ(::send(fd, hello.data(), hello.size(), MSG_NOSIGNAL), static_cast<ssize_t>(hello.size()));
+	std::string text;
+	char buffer[65536];
+	for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) text.append(buffer, static_cast<std::size_t>(n));
+	::close(fd);
+	return Lines(text);
+}
 
 void ExpectEveryLineIsJson(const std::vector<std::string>& lines) {
 	ASSERT_FALSE(lines.empty());
@@ -334,4 +369,50 @@ TEST(MatchProcess, ARobotGoingRoundALoopWithoutWaitingIsNamedAndTheMatchEnds) {
 	EXPECT_THAT(lines.back(), HasSubstr("\"failed\":1"));
 	EXPECT_THAT(Read(log), HasSubstr("\"event\":\"failed\",\"team\":0,\"robot\":\"home-1\",\"detail\":\"the statechart took 10000"));
 	EXPECT_THAT(Read(log), Not(HasSubstr("\"event\":\"failed\",\"team\":0,\"robot\":\"home-2\"")));
+}
+
+TEST(MatchProcess, AMonitoredMatchIsPacedWatchedToTheEndAndLogsTheSame) {
+	const std::string plain_log = Child::Scratch("unwatched.jsonl"), watched_log = Child::Scratch("watched.jsonl");
+	const std::vector<std::string> match = {"--home", "Patroller:1,Chaser:2", "--away", "Chaser:1", "--seed", "11", "--half", "10", "--start-playing", "--quiet"};
+	auto with = [&](std::vector<std::string> more) {
+		more.insert(more.begin(), match.begin(), match.end());
+		return more;
+	};
+	Child plain(with({"--log", plain_log}), "unwatched");
+	ASSERT_EQ(plain.Wait(), 0) << plain.Err();
+	Child watched(with({"--log", watched_log, "--monitor", "--monitor-wait", "--speed", "10"}), "watched");
+	const auto lines = WatchToTheEnd(watched, "\"home-1\"");
+	ASSERT_EQ(watched.Wait(), 0) << watched.Err();
+
+	EXPECT_TRUE(Read(plain_log) == Read(watched_log)) << "the log differs with --monitor";
+	ASSERT_GT(lines.size(), 100u);
+	EXPECT_EQ(lines.front().rfind("{\"type\":\"match\",\"monitor\":1,", 0), 0u) << lines.front();
+	EXPECT_EQ(lines.back(), Lines(Read(watched_log)).back());
+	std::size_t taken = 0, in_log = 0;
+	for (const auto& line : lines) {
+		ASSERT_TRUE(JsonChecker::Valid(line)) << line;
+		if (line.rfind("{\"type\":\"taken\"", 0) == 0) ++taken;
+	}
+	for (const auto& line : Lines(Read(watched_log))) {
+		const auto at = line.find("{\"id\":\"home-1\"");
+		if (at == std::string::npos || line.rfind("{\"type\":\"frame\"", 0) != 0) continue;
+		const auto list = line.find("\"taken\":[", at);
+		const auto end = line.find(']', list);
+		for (auto quote = line.find('"', list + 9); quote < end; quote = line.find('"', line.find('"', quote + 1) + 1)) ++in_log;
+	}
+	EXPECT_EQ(taken, in_log);
+	// ten match seconds at ten times real speed take about one: never much less (no upper bound,
+	// a loaded machine may be slow)
+	EXPECT_GE(watched.Seconds(), 0.8) << watched.Err();
+}
+
+TEST(MatchProcess, AMonitorClientGetsTheAbortedRecordOfAHang) {
+	Child run({"--home", "Hanger:2", "--away", "none", "--start-playing", "--duration", "60", "--quiet", "--hang-limit", "1", "--monitor", "--monitor-wait"}, "watched-hang");
+	const auto lines = WatchToTheEnd(run, "\"*\"");
+	const int status = run.Wait();
+	ASSERT_TRUE(WIFEXITED(status)) << run.Err();
+	EXPECT_EQ(WEXITSTATUS(status), 3);
+	ASSERT_FALSE(lines.empty());
+	EXPECT_THAT(lines.back(), HasSubstr("{\"type\":\"aborted\","));
+	EXPECT_THAT(lines.back(), HasSubstr("\"reason\":\"hang\",\"robot\":\"home-2\""));
 }

@@ -206,7 +206,37 @@ private:
 	statechart_engine::Statechart chart_;
 };
 
+// A chaser with labels, a nested state and two transitions between the same pair of states
+// (the same name, told apart only by their index): what the live monitor's records are tested on.
+//   0.1 -> 0.2 /tock 250;  0.2 = { 0.2.1 -> 0.2.2 /tick 100;  0.2.2 -> 0.2.2 [tick]/tick 100;  0.2.2 -> 0.2.2 [tock]/tock 250 }
+class PatrollerChart : public statechart_engine::IStatechart {
+public:
+	PatrollerChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_patroller", hub, options) {
+		using namespace statechart_engine;
+		auto* start = chart_.Add<StartState>("Node_0_1", &chart_);
+		auto* patrol = chart_.Add<OrState>("Node_patrol", &chart_);
+		auto* patrol_start = chart_.Add<StartState>("Node_0_2_1", patrol);
+		auto* chase = chart_.Add<BasicState>("Node_Chase", patrol, std::make_unique<Chase>());
+		chart_.Root()->SetLabel("0");
+		start->SetLabel("0.1");
+		patrol->SetLabel("0.2");
+		patrol_start->SetLabel("0.2.1");
+		chase->SetLabel("0.2.2");
+		chart_.AddTransition(start, patrol, nullptr, std::make_unique<TimeoutAction>("tock", 250));
+		chart_.AddTransition(patrol_start, chase, nullptr, std::make_unique<TimeoutAction>("tick", 100));
+		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tick"), std::make_unique<TimeoutAction>("tick", 100));
+		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tock"), std::make_unique<TimeoutAction>("tock", 250));
+	}
+	void Start() override { chart_.Start(); }
+	void Stop() override { chart_.Stop(); }
+	statechart_engine::Statechart& Chart() override { return chart_; }
+
+private:
+	statechart_engine::Statechart chart_;
+};
+
 inline const statechart_engine::StatechartRegistrar<ChaserChart> chaser_registrar("Chaser");
+inline const statechart_engine::StatechartRegistrar<PatrollerChart> patroller_registrar("Patroller");
 inline const statechart_engine::StatechartRegistrar<RunnerChart> runner_registrar("Runner");
 inline const statechart_engine::StatechartRegistrar<SpinnerChart> spinner_registrar("Spinner");
 inline const statechart_engine::StatechartRegistrar<FailingChart<Throws>> thrower_registrar("Thrower");

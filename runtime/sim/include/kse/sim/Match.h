@@ -76,6 +76,16 @@ public:
 	virtual void OnFrame(const Match&) {}
 	virtual void OnEvent(const Match&, const MatchEvent&) {}
 	virtual void OnEnd(const Match&) {}
+	/**
+	 * A transition segment {@code robot}'s statechart took, as the engine takes it (inside the
+	 * robot's decision cycle): the one observer slot of the statechart is the match's, which
+	 * passes each segment on to every match observer.
+	 */
+	virtual void OnTransition(const Match&, std::size_t /*robot*/, const statechart_engine::TransitionSegmentBase&) {}
+	/** After a robot's decision cycle (each robot has one every kTicksPerFrame ticks). */
+	virtual void OnDecision(const Match&, std::size_t /*robot*/) {}
+	/** At the end of every tick (10 ms of match time): where a live view does its I/O. */
+	virtual void OnTick(const Match&) {}
 };
 
 class Match {
@@ -96,8 +106,13 @@ public:
 
 	/** One tick. The first call starts the match (observers see OnStart). */
 	void Step();
-	/** Steps until the game is over (Referee::GameOver) or {@code seconds} of simulated time have passed; observers see OnEnd. */
-	void Run(double seconds, const std::function<void(const Match&)>& progress = {}, bool realtime = false);
+	/**
+	 * Steps until the game is over (Referee::GameOver) or {@code seconds} of simulated time have
+	 * passed; observers see OnEnd. {@code speed}: match seconds per wall-clock second (1: real
+	 * time, 10: ten times as fast); 0, as fast as it can. Pacing only waits between ticks, so the
+	 * match is the same at any speed.
+	 */
+	void Run(double seconds, const std::function<void(const Match&)>& progress = {}, double speed = 0);
 	void End();
 
 	// what observers and tests read
@@ -118,6 +133,9 @@ public:
 	const std::vector<const std::string*>& TransitionsSinceFrame(std::size_t robot) const { return players_[robot]->taken; }
 	const robot::Perception& LastPerception(std::size_t robot) const { return players_[robot]->perception; }
 	const RobotSense& Sense(std::size_t robot) const { return players_[robot]->sense; }
+	/** The robot's behaviour process, or null for a robot played by a Controller. */
+	const robot::Robot* GetRobot(std::size_t robot) const { return players_[robot]->robot.get(); }
+	robot::Robot* GetRobot(std::size_t robot) { return players_[robot]->robot.get(); }
 	/** Kick-off pose of a robot, field frame, for the current kick-off. */
 	Pose2 ReadyPose(std::size_t robot) const;
 	/** Field pose from a team's frame and back (the same mapping both ways). */

@@ -81,6 +81,16 @@ private:
 	int frames_ = 0;
 };
 
+// The records the log and the live monitor (MatchMonitor.h) both write, without '\n'.
+/** The fields of the "match" record after its type: "version":1,...,"teams":[...]. */
+std::string MatchRecordFields(const Match& match);
+/** {"type":"event",...} */
+std::string EventRecord(const Match& match, const MatchEvent& event);
+/** {"type":"result",...}: the match as it ends. */
+std::string ResultRecord(const Match& match);
+/** {"type":"aborted",...}: a match that could not end ({@code robot} may be empty). */
+std::string AbortedRecord(double time, const std::string& reason, const std::string& robot, const std::string& detail);
+
 /** A JSON string literal. */
 std::string JsonString(const std::string& text);
 /** A number with {@code digits} decimals, "-0.000" written as "0.000". */

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
@@ -44,6 +45,13 @@ public:
 
 	/** Give it every robot's reports (Match::Reports().SetListener): an overrun starts the robot's hang clock. */
 	void OnReport(const RobotReport& report);
+	/**
+	 * Also told when the match ends for a hang or a signal (reason "hang" or "signal", the robot's
+	 * id or "", what happened), on the supervisor's thread, after the log and before the exit: the
+	 * live monitor's clients get the "aborted" record too. Not for a crash (nothing but
+	 * async-signal-safe calls then).
+	 */
+	void OnAbort(std::function<void(const std::string& reason, const std::string& robot, const std::string& detail)> listener);
 
 private:
 	struct Stuck {
@@ -57,6 +65,7 @@ private:
 	void Run();
 	[[noreturn]] void EndForHang(const Stuck& stuck, std::chrono::steady_clock::duration running);
 	[[noreturn]] void EndForSignal(int signal);
+	void Abort(const std::string& reason, const std::string& robot, const std::string& detail);
 	static void OnCrash(int signal);
 
 	Options options_;
@@ -64,6 +73,8 @@ private:
 	JsonLinesLog* log_;
 	std::mutex mutex_;
 	std::map<std::uint64_t, Stuck> stuck_;  // by overrun
+	std::mutex abort_mutex_;  // not mutex_: a hang is ended with mutex_ held
+	std::function<void(const std::string&, const std::string&, const std::string&)> on_abort_;
 	bool stopping_ = false;
 	sigset_t previous_mask_;
 	struct sigaction previous_crash_[5];

@@ -88,8 +88,12 @@ public final class DiagramSocketServer implements AutoCloseable {
 		if (pages != null) {
 			context.addServlet(new ServletHolder(new PageServlet(pages)), "/*");
 		}
-		JakartaWebSocketServletContainerInitializer.configure(context, (servletContext, container) -> container
-				.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injectors, token)).build()));
+		JakartaWebSocketServletContainerInitializer.configure(context, (servletContext, container) -> {
+			container.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injectors, token)).build());
+			// the live monitor's relay to a kse-match on this machine (the port is known once Jetty listens)
+			container.addEndpoint(ServerEndpointConfig.Builder.create(MonitorEndpoint.class, MonitorEndpoint.PATH)
+					.configurator(new MonitorEndpoint.Configurator(token, connector::getLocalPort)).build());
+		});
 		jetty.start();
 		return new DiagramSocketServer(jetty, token, served);
 	}
