@@ -56,9 +56,6 @@ bench/notation.sh 2>&1 | grep -v -e '^log4j:' -e '^WARNING:'
 echo "== Diagram server: open a 1,000-state statechart, move in a 500-state one, over the WebSocket (benchmark)"
 bench/diagram.sh 2>&1 | grep -v -e '^log4j:' -e '^WARNING:'
 
-echo "== Diagram editor in headless Chromium against kse serve (screenshots: tests/org.kse.diagram.e2e/target/screenshots)"
-tests/org.kse.diagram.e2e/run.sh
-
 echo "== Diagram editor in headless Chromium: open 1,000 states, move in them and in the Goalie (benchmark, figures only)"
 bench/diagram-browser.sh || echo "   (the browser benchmark did not finish; figures are never a failure)"
 
@@ -98,8 +95,15 @@ echo "== A short match (log and picture under $out/match.*) and the simulator's 
 "$out/examples/kse-match" --seed 1 --half 120 --log "$out/match.jsonl" --svg "$out/match.svg"
 "$out/examples/match_bench" 1
 
-echo "== Live monitor: kse serve's page watches home-1 of a running seeded match (kse-match --monitor) in headless Chromium (delay figures only)"
-KSE_MATCH="$out/examples/kse-match" tests/org.kse.diagram.e2e/run.sh tests/16-monitor.test.mjs
+echo "== Diagram editor, live monitor and replay in headless Chromium against kse serve, with matches of the kse-match above"
+echo "   (screenshots: tests/org.kse.diagram.e2e/target/screenshots)"
+KSE_MATCH="$out/examples/kse-match" tests/org.kse.diagram.e2e/run.sh
+
+echo "== Live monitor: all 10 robots of a 5-against-5 match on one board in headless Chromium, at 1x and 10x (benchmark, figures only)"
+bench/monitor.sh "$out/examples/kse-match" || echo "   (the monitor benchmark did not finish; figures are never a failure)"
+
+echo "== Replay: a 10-minute 5-against-5 match log opened and scrubbed in kse serve's page in headless Chromium (benchmark, figures only)"
+bench/replay.sh "$out/examples/kse-match" || echo "   (the replay benchmark did not finish; figures are never a failure)"
 
 echo "== A project outside the repository builds its behaviour with the runtime's CMake package (kse_add_statechart)"
 tests/cmake-package/run.sh "$out/runtime-prefix" "$out/cmake-package"

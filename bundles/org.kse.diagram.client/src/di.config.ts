@@ -14,6 +14,7 @@ import {
     IDiagramOptions,
     LogLevel,
     MessageAction,
+    SetEditValidationResultAction,
     STANDALONE_MODULES,
     ShowGridAction,
     StatusAction,
@@ -39,7 +40,7 @@ import { DISK_CHANGE, DiskChangeHandler } from './disk-changes';
 import { KseExportSvgActionHandler } from './export';
 import { KseHoverMouseListener } from './hover';
 import { kseInteractionModule } from './interaction';
-import { KseEditLabelUI } from './label-editing';
+import { KseEditLabelUI, LateEditValidationResults } from './label-editing';
 import { KseModelSource } from './model-source';
 import {
     BasicStateNode,
@@ -98,6 +99,8 @@ export const kseDiagramModule = new FeatureModule(
 
         // expressions are edited whole, in a text area
         rebind(GlspEditLabelUI).to(KseEditLabelUI).inSingletonScope();
+        bind(LateEditValidationResults).toSelf().inSingletonScope();
+        configureActionHandler(context, SetEditValidationResultAction.KIND, LateEditValidationResults);
 
         // compound operations carry only what the server handles
         rebind(GLSPModelSource).to(KseModelSource).inSingletonScope();

@@ -3,7 +3,7 @@
  * expression; its editor starts with the whole expression (a text area: Shift+Enter for a new line,
  * Enter to apply, Escape to cancel). The edit goes to the server as ApplyLabelEditOperation.
  */
-import { GlspEditLabelUI } from '@eclipse-glsp/client';
+import { GlspEditLabelUI, IActionHandler } from '@eclipse-glsp/client';
 import { injectable } from 'inversify';
 import { ExpressionLabel, NameLabel } from './model';
 
@@ -29,5 +29,18 @@ export class KseEditLabelUI extends GlspEditLabelUI {
             return;
         }
         return super.applyLabelEdit();
+    }
+}
+
+/**
+ * The answer to a name's check that comes after GLSP's validator stopped waiting for it (2 s: a
+ * server busy with thousands of states). The editor went on without it and the server checks the
+ * edit again when it applies it, so the late answer has nothing left to do; without a handler the
+ * dispatcher would report it as an error in the page.
+ */
+@injectable()
+export class LateEditValidationResults implements IActionHandler {
+    handle(): void {
+        // nothing: see above
     }
 }

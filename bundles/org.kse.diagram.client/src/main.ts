@@ -18,40 +18,62 @@ import { createBaseDiv, diagramPage } from './diagram-page';
 import { setExportBaseName } from './export';
 import { DIAGRAM_TYPE } from './model';
 import { installMonitor, readMonitorParameters } from './monitor';
+import { installMonitorHub, readHubParameters } from './monitor-hub';
+import { installReplay, isReplayedDiagram, readReplayParameters } from './replay';
 import { newClientId, readPageParameters } from './page';
 import { followEditorState } from './page-state';
 import { startPage } from './startup';
-import { installTestApi } from './test-api';
+import { installTestApi, KseHandle } from './test-api';
 import { installToolbar } from './toolbar';
 import './kse.css';
 
-const parameters = readPageParameters(window.location);
-// opened to watch a running match: the diagram is only looked at (monitor.ts)
-const monitor = readMonitorParameters(window.location);
-const clientId = newClientId();
-setExportBaseName(parameters.modelName);
-document.title = `${parameters.modelName} – KSE`;
-createBaseDiv(clientId);
-
-const connection = new ServerConnection(parameters);
-const container = createKseDiagramContainer(
-    {
-        clientId,
-        diagramType: DIAGRAM_TYPE,
-        sourceUri: parameters.model,
-        glspClientProvider: () => connection.client,
-        editMode: monitor ? 'readonly' : 'editable'
-    },
-    { popupOpenDelay: 500, popupCloseDelay: 300 }
-);
-const page = diagramPage(parameters, clientId, container);
-
-followEditorState(page, connection);
-const startup = startPage(page, connection);
-const toolbar = installToolbar(page);
-installTestApi(page, startup.ready, toolbar);
-if (monitor) {
-    window.kse.monitor = installMonitor(page, startup.ready, monitor);
+// opened to replay a match log: the page shows the log, and no diagram of its own (replay.ts)
+const replay = readReplayParameters(window.location);
+// opened to pick a running match or to watch several robots: no diagram of its own (monitor-hub.ts)
+const hub = readHubParameters(window.location);
+if (replay) {
+    window.kse = { replay: installReplay(replay) } as unknown as KseHandle;
+} else if (hub) {
+    window.kse = { monitorHub: installMonitorHub(hub) } as unknown as KseHandle;
+} else {
+    showDiagram();
 }
 
-connection.connect(page, startup.isShown);
+/** The diagram page of one model (the page's usual self). */
+function showDiagram(): void {
+    const parameters = readPageParameters(window.location);
+    // opened to watch a running match: the diagram is only looked at (monitor.ts)
+    const monitor = readMonitorParameters(window.location);
+    // a robot's statechart shown by a replay (replay.ts): only looked at as well
+    const replayed = isReplayedDiagram(window.location);
+    if (replayed) {
+        document.body.classList.add('kse-replayed');
+    }
+    const clientId = newClientId();
+    setExportBaseName(parameters.modelName);
+    document.title = `${parameters.modelName} – KSE`;
+    createBaseDiv(clientId);
+
+    const connection = new ServerConnection(parameters);
+    const container = createKseDiagramContainer(
+        {
+            clientId,
+            diagramType: DIAGRAM_TYPE,
+            sourceUri: parameters.model,
+            glspClientProvider: () => connection.client,
+            editMode: monitor || replayed ? 'readonly' : 'editable'
+        },
+        { popupOpenDelay: 500, popupCloseDelay: 300 }
+    );
+    const page = diagramPage(parameters, clientId, container);
+
+    followEditorState(page, connection);
+    const startup = startPage(page, connection);
+    const toolbar = installToolbar(page);
+    installTestApi(page, startup.ready, toolbar);
+    if (monitor) {
+        window.kse.monitor = installMonitor(page, startup.ready, monitor);
+    }
+
+    connection.connect(page, startup.isShown);
+}

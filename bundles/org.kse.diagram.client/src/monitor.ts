@@ -13,44 +13,58 @@
  * `body[data-kse-monitor]` says connecting, live, ended or error; `window.kse.monitor` lets tests and
  * hosts read what is drawn and how long a transition took from the engine to the diagram.
  */
-import { GModelElement, GModelRoot, ModifyCSSFeedbackAction } from '@eclipse-glsp/client';
+import { ModifyCSSFeedbackAction } from '@eclipse-glsp/client';
 import { DiagramPage } from './diagram-page';
+import { CSS_ACTIVE, CSS_FIRED, cssChanges, emptyMapping, Mapping, mappingOf } from './highlight';
 import { report } from './status-line';
+import { fitStatesAction } from './viewport';
 
-export const CSS_ACTIVE = 'kse-active';
-export const CSS_FIRED = 'kse-fired';
+export { CSS_ACTIVE, CSS_FIRED };
 /** How long a fired transition stays highlighted. */
 const FLASH_MS = 400;
+/** The least time between two drawings of a page in a board's tile (see schedule()). */
+const TILE_FRAME_MS = 50;
 /** How many transitions the side panel lists. */
 const LISTED = 50;
 /** The delays kept for window.kse.monitor.delays() (a long match at 10x takes far more transitions). */
 const KEPT_DELAYS = 200_000;
 
 export interface MonitorParameters {
-    /** The kse-match monitor's port on 127.0.0.1. */
+    /** The kse-match monitor's port on 127.0.0.1 ('' when the match is named by its pid). */
     port: string;
-    /** The kse-match monitor's key (its token). */
+    /** The kse-match monitor's key (its token; '' when the match is named by its pid). */
     key: string;
+    /** The match's process id, as the picker names it (the relay looks its port and key up), or ''. */
+    match: string;
     /** The robot watched, e.g. home-1. */
     robot: string;
     /** The relay's address on this page's server. */
     socketUrl: string;
+    /** Shown in a tile of the monitor's board (monitor-hub.ts): no toolbar. */
+    tile: boolean;
 }
 
-/** The monitor's parameters when the page was opened to watch a match, else undefined. */
+/** The monitor's parameters when the page was opened to watch a match (&monitor=P&key=K or &match=PID), else undefined. */
 export function readMonitorParameters(location: Location): MonitorParameters | undefined {
     const query = new URLSearchParams(location.search);
     const port = query.get('monitor');
-    if (port === null) {
+    const match = query.get('match') ?? '';
+    if (port === null && match === '') {
         return undefined;
     }
     const key = query.get('key') ?? '';
     const robot = query.get('robot') ?? '';
     const scheme = location.protocol === 'https:' ? 'wss:' : 'ws:';
+    // a match picked by pid: the page never holds its key
+    const source = match ? `&match=${encodeURIComponent(match)}` : `&port=${encodeURIComponent(port ?? '')}&key=${encodeURIComponent(key)}`;
     const socketUrl =
-        `${scheme}//${location.host}/monitor?token=${encodeURIComponent(query.get('token') ?? '')}` +
-        `&port=${encodeURIComponent(port)}&key=${encodeURIComponent(key)}&robots=${encodeURIComponent(robot)}`;
-    return { port, key, robot, socketUrl };
+        `${scheme}//${location.host}/monitor?token=${encodeURIComponent(query.get('token') ?? '')}` + `${source}&robots=${encodeURIComponent(robot)}`;
+    return { port: match ? '' : (port ?? ''), key: match ? '' : key, match, robot, socketUrl, tile: query.get('tile') === '1' };
+}
+
+/** The match as the messages name it. */
+function matchName(parameters: MonitorParameters): string {
+    return parameters.match ? `match ${parameters.match}` : `the match on 127.0.0.1:${parameters.port}`;
 }
 
 export type MonitorState = 'connecting' | 'live' | 'ended' | 'error';
@@ -62,6 +76,8 @@ export interface MonitorHandle {
     active(): string[];
     /** How many transitions of the robot the page received. */
     taken(): number;
+    /** The match time the page started following the robot (its first configuration), NaN before. */
+    since(): number;
     /** The delay of the last transition drawn: from the engine taking it (the record's wall) to the diagram showing it, in ms. */
     readonly lastDelayMs: number;
     /** Every transition's delay until drawn, in ms, in the order drawn (not while paused). */
@@ -84,43 +100,7 @@ interface Listed {
     expression: string;
 }
 
-/** The element ids a robot's runtime names map to: states by label, transitions by their index in the model. */
-interface Mapping {
-    stateByLabel: Map<string, string>;
-    states: number;
-    transitions: Set<string>;
-    expressionOf: Map<string, string>;
-}
-
-function stringArg(element: GModelElement, name: string): string {
-    const args = (element as unknown as { args?: Record<string, unknown> }).args;
-    const value = args?.[name];
-    return typeof value === 'string' ? value : '';
-}
-
-/** A transition's id: the model's path of it (its labels' ids add #expression or #name). */
-const TRANSITION_ID = /^\/\/@transitions\.\d+$/;
-
-function mappingOf(root: Readonly<GModelRoot>): Mapping {
-    const mapping: Mapping = { stateByLabel: new Map(), states: 0, transitions: new Set(), expressionOf: new Map() };
-    const visit = (element: Readonly<GModelElement>): void => {
-        if (element.type.startsWith('state:')) {
-            mapping.states++;
-            const label = stringArg(element as GModelElement, 'label');
-            if (label) {
-                mapping.stateByLabel.set(label, element.id);
-            }
-        } else if (TRANSITION_ID.test(element.id)) {
-            mapping.transitions.add(element.id);
-            mapping.expressionOf.set(element.id, stringArg(element as GModelElement, 'expression'));
-        }
-        for (const child of (element as unknown as { children?: GModelElement[] }).children ?? []) {
-            visit(child);
-        }
-    };
-    visit(root);
-    return mapping;
-}
+// the runtime names' element ids (states by label, transitions by their index in the model): highlight.ts
 
 /** The guard of a transition expression "guard / actions" (the whole text when it has no actions). */
 function guardOf(expression: string): string {
@@ -189,16 +169,21 @@ function createPanel(robot: string): {
 export function installMonitor(page: DiagramPage, ready: Promise<void>, parameters: MonitorParameters): MonitorHandle {
     const { dispatcher, editorContext } = page;
     document.body.classList.add('kse-monitoring');
+    if (parameters.tile) {
+        document.body.classList.add('kse-monitor-tile');
+    }
     const ui = createPanel(parameters.robot);
     document.getElementById('kse-diagram')?.append(ui.panel);
 
     let state: MonitorState = 'connecting';
-    let mapping: Mapping = { stateByLabel: new Map(), states: 0, transitions: new Set(), expressionOf: new Map() };
+    let mapping: Mapping = emptyMapping();
     // what the engine says now
     let activeLabels: string[] = [];
     const firedAt = new Map<string, number>();
     const listed: Listed[] = [];
     let takenCount = 0;
+    // a watcher that joins a running match sees its transitions from then on
+    let since = NaN;
     let firstReceived = 0;
     let lastReceived = 0;
     let header = { t: NaN, game: '', score: '' };
@@ -232,13 +217,27 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
         report({ kind: 'status', severity: 'WARNING', message });
     }
 
+    // A board shows up to ten of these pages at once, each redrawing its diagram as often as the
+    // screen refreshes: on a small machine they fall behind together. A tile redraws at most every
+    // TILE_FRAME_MS, which costs each transition that much delay at most and saves the rest.
+    const frameMs = parameters.tile ? TILE_FRAME_MS : 0;
+    let lastFrame = 0;
     function schedule(): void {
         if (!frameRequested && !paused) {
             frameRequested = true;
-            requestAnimationFrame(() => {
-                frameRequested = false;
-                drawing = drawing.then(draw);
-            });
+            const frame = (): void => {
+                requestAnimationFrame(() => {
+                    frameRequested = false;
+                    lastFrame = performance.now();
+                    drawing = drawing.then(draw);
+                });
+            };
+            const wait = lastFrame + frameMs - performance.now();
+            if (wait > 0) {
+                setTimeout(frame, wait);
+            } else {
+                frame();
+            }
         }
     }
 
@@ -263,19 +262,7 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
                 firedAt.delete(id);
             }
         }
-        const actions: ModifyCSSFeedbackAction[] = [];
-        const change = (before: Set<string>, after: Set<string>, css: string): void => {
-            const gone = [...before].filter(id => !after.has(id));
-            const come = [...after].filter(id => !before.has(id));
-            if (gone.length > 0) {
-                actions.push(ModifyCSSFeedbackAction.create({ elements: gone, remove: [css] }));
-            }
-            if (come.length > 0) {
-                actions.push(ModifyCSSFeedbackAction.create({ elements: come, add: [css] }));
-            }
-        };
-        change(drawnActive, active, CSS_ACTIVE);
-        change(drawnFired, fired, CSS_FIRED);
+        const actions: ModifyCSSFeedbackAction[] = [...cssChanges(drawnActive, active, CSS_ACTIVE), ...cssChanges(drawnFired, fired, CSS_FIRED)];
         const waiting = undrawn;
         undrawn = [];
         if (actions.length > 0) {
@@ -329,6 +316,9 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
             case 'active':
                 if (record.robot === parameters.robot && Array.isArray(record.active)) {
                     activeLabels = record.active.filter((label): label is string => typeof label === 'string');
+                    if (Number.isNaN(since) && typeof record.t === 'number') {
+                        since = record.t;
+                    }
                 }
                 break;
             case 'taken':
@@ -367,7 +357,7 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
             socket?.close(1000);
             return;
         }
-        setState('live', `Watching ${parameters.robot} (${String(robot.behaviour ?? '')}) of the match on 127.0.0.1:${parameters.port}`);
+        setState('live', `Watching ${parameters.robot} (${String(robot.behaviour ?? '')}) of ${matchName(parameters)}`);
         if (robot.states !== mapping.states || robot.transitions !== mapping.transitions.size) {
             warn(
                 `${parameters.robot} runs ${String(robot.behaviour ?? 'a statechart')} with ${String(robot.states)} states and ` +
@@ -434,11 +424,15 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
     setState('connecting');
     void ready.then(() => {
         mapping = mappingOf(editorContext.modelRoot);
+        if (parameters.tile) {
+            // a tile of the board is small: the whole chart, or states out of view would not be drawn at all
+            void dispatcher.dispatch(fitStatesAction(editorContext.modelRoot, 1, false));
+        }
         if (!parameters.robot) {
             setState('error', 'No robot given: open the page with &robot=<id> (e.g. home-1).', 'ERROR');
             return;
         }
-        report({ kind: 'connection', severity: 'INFO', message: `Connecting to the match on 127.0.0.1:${parameters.port}…` });
+        report({ kind: 'connection', severity: 'INFO', message: `Connecting to ${matchName(parameters)}…` });
         socket = new WebSocket(parameters.socketUrl);
         socket.addEventListener('message', event => {
             const received = now();
@@ -466,8 +460,11 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
                 return;
             }
             if (event.code === 1000) {
-                // the last records are drawn before the page says the match ended
-                schedule();
+                // the last records are drawn before the page says the match ended (now: a tile's
+                // next frame may be up to TILE_FRAME_MS away)
+                if (!paused) {
+                    drawing = drawing.then(draw);
+                }
                 void (paused ? Promise.resolve() : new Promise<void>(resolve => requestAnimationFrame(() => resolve())).then(() => drawing)).then(() =>
                     setState('ended', `The match ended (${result || 'connection closed'}).`)
                 );
@@ -482,6 +479,7 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
         state: () => state,
         active: () => [...drawnActive],
         taken: () => takenCount,
+        since: () => since,
         get lastDelayMs() {
             return lastDelayMs;
         },

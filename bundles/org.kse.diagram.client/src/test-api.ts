@@ -8,6 +8,8 @@ import { DiagramPage } from './diagram-page';
 import { exportSvg, svgToPng } from './export';
 import { ElementJson, toJson } from './model-json';
 import { MonitorHandle } from './monitor';
+import { HubHandle } from './monitor-hub';
+import { ReplayHandle } from './replay';
 import { StatusEntry, statusHistory } from './status-line';
 import { Toolbar } from './toolbar';
 
@@ -42,6 +44,10 @@ export interface KseHandle {
     container: Container;
     /** The live monitor, when the page was opened to watch a match (&monitor=…). */
     monitor?: MonitorHandle;
+    /** The replay, when the page was opened to replay a match log (&replay=…); then it is the handle's only member. */
+    replay?: ReplayHandle;
+    /** The live monitor's picker or board, when the page was opened as one (&monitor=pick, &monitor=board); then it is the handle's only member. */
+    monitorHub?: HubHandle;
 }
 
 declare global {

@@ -11,9 +11,12 @@
 #include <stdexcept>
 #include <string>
 
+#include <unistd.h>
+
 #include <statechart_engine/Factories.h>
 #include <kse/sim/GameControllerLink.h>
 #include <kse/sim/LogFile.h>
+#include <kse/sim/MatchDiscovery.h>
 #include <kse/sim/MatchLog.h>
 #include <kse/sim/MatchMonitor.h>
 #include <kse/sim/MatchSupervisor.h>
@@ -39,7 +42,9 @@ Plays a simulated RoboCup SPL match between the registered behaviours of this pr
   --speed F          run at F times real speed (0.01 to 1000; e.g. 10: a 10 min half in 1 min)
   --monitor          let a live monitor watch the match (docs/monitor.md): listens on 127.0.0.1,
                      on a port the system chooses, and prints before the start
-                     "kse-match: monitor on 127.0.0.1:PORT token TOKEN" on standard error
+                     "kse-match: monitor on 127.0.0.1:PORT token TOKEN" on standard error; it
+                     announces itself to kse serve and the workbench in the user's private folder
+                     $XDG_RUNTIME_DIR/kse/matches (or ~/.cache/kse/matches) while it runs
   --monitor-port N   the same on port N
   --monitor-wait     with --monitor: start the match only once a monitor client has subscribed
                      (at most 60 s, then it starts anyway)
@@ -242,6 +247,17 @@ int RunMatchCli(int argc, char** argv) {
 				if (supervisor) supervisor->OnAbort({});  // before the monitor goes: the supervisor outlives it
 			}
 		} unhook;
+		// after the monitor: removed first when the match ends, so pickers stop listing it while
+		// the monitor still hands its watchers the last lines
+		std::unique_ptr<MatchAnnouncement> announcement;
+		struct Unannounce {
+			MatchSupervisor& supervisor;
+			std::unique_ptr<MatchAnnouncement>& announcement;
+			~Unannounce() {
+				supervisor.RemoveAtExit({});
+				announcement.reset();
+			}
+		} unannounce{supervisor, announcement};
 		if (monitor) {
 			robot::MonitorServer::Options options;
 			options.port = static_cast<std::uint16_t>(monitor_port);
@@ -253,6 +269,15 @@ int RunMatchCli(int argc, char** argv) {
 			unhook.supervisor = &supervisor;
 			// even with --quiet: without it nobody can connect
 			std::cerr << "kse-match: " << watcher->Server().Address() << std::endl;
+			// so that kse serve and the workbench can list it; a match that cannot be announced is
+			// still watched by port and key
+			try {
+				announcement = std::make_unique<MatchAnnouncement>(
+					DiscoveryFolder(), AnnouncementJson(match, static_cast<long>(::getpid()), watcher->Server().Port(), watcher->Server().Token(), robot::WallMilliseconds()));
+				supervisor.RemoveAtExit(announcement->Path());
+			} catch (const std::exception& error) {
+				std::cerr << "kse-match: monitor: " << error.what() << " (connect with the port and the token above)" << std::endl;
+			}
 			if (monitor_wait && !watcher->WaitForSubscriber(std::chrono::seconds(60))) {
 				std::cerr << "kse-match: no monitor client subscribed within 60 s; the match starts anyway" << std::endl;
 			}

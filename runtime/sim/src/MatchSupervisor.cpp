@@ -26,6 +26,15 @@ constexpr long kLookNanoseconds = 50'000'000;  // how soon a hang or the log's s
 std::atomic<LogFile*> active_file{nullptr};
 std::atomic<JsonLinesLog*> active_log{nullptr};
 
+// The file RemoveAtExit() named, in a buffer the crash handler may read (no allocation there);
+// empty: none.
+char remove_at_exit[512];
+std::atomic<bool> remove_set{false};
+
+void RemoveAnnouncedFile() {
+	if (remove_set.load()) ::unlink(remove_at_exit);
+}
+
 // Room for the crash handler on a stack of its own: a behaviour that recursed too deep has
 // no stack left for it.
 alignas(16) char crash_stack[1 << 16];
@@ -110,6 +119,7 @@ MatchSupervisor::~MatchSupervisor() {
 	thread_.join();
 	active_log.store(nullptr);
 	active_file.store(nullptr);
+	remove_set.store(false);
 	for (std::size_t i = 0; i < std::size(kCrashSignals); ++i) sigaction(kCrashSignals[i], &previous_crash_[i], nullptr);
 	pthread_sigmask(SIG_SETMASK, &previous_mask_, nullptr);
 }
@@ -148,6 +158,13 @@ void MatchSupervisor::OnAbort(std::function<void(const std::string&, const std::
 	on_abort_ = std::move(listener);
 }
 
+void MatchSupervisor::RemoveAtExit(const std::string& path) {
+	remove_set.store(false);
+	if (path.empty() || path.size() >= sizeof remove_at_exit) return;
+	std::memcpy(remove_at_exit, path.c_str(), path.size() + 1);
+	remove_set.store(true);
+}
+
 void MatchSupervisor::Abort(const std::string& reason, const std::string& robot, const std::string& detail) {
 	std::lock_guard lock(abort_mutex_);
 	if (on_abort_) on_abort_(reason, robot, detail);
@@ -161,6 +178,7 @@ void MatchSupervisor::EndForHang(const Stuck& stuck, std::chrono::steady_clock::
 	const std::string detail = stuck.behaviour + " stuck for " + seconds + " s in the " + stuck.call;
 	if (log_) log_->Aborted("hang", stuck.robot, detail);
 	if (file_) file_->Flush();
+	RemoveAnnouncedFile();
 	Abort("hang", stuck.robot, detail);
 	std::fflush(nullptr);
 	// Not exit(): the match's thread is still inside the behaviour, and static destructors
@@ -173,6 +191,7 @@ void MatchSupervisor::EndForSignal(int signal) {
 	          << (file_ ? "; the log " + file_->Path() + " holds the match up to here" : std::string()) << std::endl;
 	if (log_) log_->Aborted("signal", "", SignalName(signal));
 	if (file_) file_->Flush();
+	RemoveAnnouncedFile();
 	Abort("signal", "", SignalName(signal));
 	std::fflush(nullptr);
 	std::_Exit(128 + signal);
@@ -200,6 +219,7 @@ void MatchSupervisor::OnCrash(int signal) {
 	if (file != nullptr) message.Add("; the log holds the match up to here");
 	message.Add("\n");
 	[[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, message.data, message.size);
+	RemoveAnnouncedFile();  // unlink() is async-signal-safe
 	if (file != nullptr) {
 		char line[512];
 		char id[64] = {};

@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -210,6 +211,7 @@ public:
 		return -1;
 	}
 	void Signal(int signal) { kill(pid_, signal); }
+	int Pid() const { return pid_; }
 	std::string Err() const { return Read(err_path_); }
 	std::string Out() const { return Read(out_path_); }
 	double Seconds() const { return std::chrono::duration<double>(took_).count(); }
@@ -415,4 +417,115 @@ TEST(MatchProcess, AMonitorClientGetsTheAbortedRecordOfAHang) {
 	ASSERT_FALSE(lines.empty());
 	EXPECT_THAT(lines.back(), HasSubstr("{\"type\":\"aborted\","));
 	EXPECT_THAT(lines.back(), HasSubstr("\"reason\":\"hang\",\"robot\":\"home-2\""));
+}
+
+// The discovery folder (MatchDiscovery.h): a watched match announces itself privately for as long
+// as it runs, and neither the end nor Ctrl+C, a hang or a crash leaves the announcement behind.
+class Announcement : public ::testing::Test {
+protected:
+	void SetUp() override {
+		runtime_ = Child::Scratch("xdg-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+		std::system(("rm -rf '" + runtime_ + "'").c_str());
+		::mkdir(runtime_.c_str(), 0700);
+		const char* before = std::getenv("XDG_RUNTIME_DIR");
+		had_ = before != nullptr;
+		if (had_) before_ = before;
+		::setenv("XDG_RUNTIME_DIR", runtime_.c_str(), 1);  // the child inherits it
+	}
+	void TearDown() override {
+		if (had_) {
+			::setenv("XDG_RUNTIME_DIR", before_.c_str(), 1);
+		} else {
+			::unsetenv("XDG_RUNTIME_DIR");
+		}
+	}
+	std::string Folder() const { return runtime_ + "/kse/matches"; }
+	/** The child's announcement, once it is there (empty after 30 s without). */
+	std::string WaitForFile(int pid) const {
+		const std::string path = Folder() + "/" + std::to_string(pid) + ".json";
+		for (const auto end = Clock::now() + std::chrono::seconds(30); Clock::now() < end; std::this_thread::sleep_for(std::chrono::milliseconds(10))) {
+			if (::access(path.c_str(), F_OK) == 0) return path;
+		}
+		return {};
+	}
+	static unsigned Mode(const std::string& path) {
+		struct stat status {};
+		return ::stat(path.c_str(), &status) == 0 ? status.st_mode & 07777 : 0;
+	}
+	/** Whether the folder holds no file at all (no announcement, no temporary file). */
+	bool Empty() const {
+		const std::string listing = Child::Scratch("listing");
+		std::system(("ls -A '" + Folder() + "' > '" + listing + "'").c_str());
+		return Read(listing).empty();
+	}
+
+	std::string runtime_;
+	std::string before_;
+	bool had_ = false;
+};
+
+TEST_F(Announcement, AWatchedMatchIsListedPrivatelyWhileItRunsAndNotAfter) {
+	Child run({"--home", "Chaser:1", "--away", "Chaser:1", "--seed", "4", "--half", "2", "--start-playing", "--quiet", "--monitor", "--monitor-wait"}, "announced");
+	const std::string path = WaitForFile(run.Pid());
+	ASSERT_FALSE(path.empty()) << "no announcement in " << Folder() << "\n" << run.Err();
+	EXPECT_EQ(Mode(path), 0600u);
+	EXPECT_EQ(Mode(Folder()), 0700u);
+	EXPECT_EQ(Mode(runtime_ + "/kse"), 0700u);
+	const std::string json = Read(path);
+	EXPECT_TRUE(JsonChecker::Valid(json)) << json;
+	std::smatch address;
+	const std::string err = run.Err();
+	ASSERT_TRUE(std::regex_search(err, address, std::regex("monitor on 127\\.0\\.0\\.1:([0-9]+) token (\\S+)"))) << err;
+	EXPECT_THAT(json, HasSubstr("{\"pid\":" + std::to_string(run.Pid()) + ",\"port\":" + address[1].str() + ",\"token\":\"" + address[2].str() + "\",\"started\":"));
+	EXPECT_THAT(json, HasSubstr("\"seed\":4,"));
+	EXPECT_THAT(json, HasSubstr("{\"id\":\"home-1\",\"number\":1,\"behaviour\":\"Chaser\"}"));
+	EXPECT_THAT(json, HasSubstr("{\"id\":\"away-1\",\"number\":1,\"behaviour\":\"Chaser\"}"));
+	WatchToTheEnd(run, "\"home-1\"");
+	ASSERT_EQ(run.Wait(), 0) << run.Err();
+	EXPECT_NE(::access(path.c_str(), F_OK), 0) << path << " is still there after the match";
+	EXPECT_TRUE(Empty());
+}
+
+TEST_F(Announcement, AnOlderFolderOpenToOthersIsMadePrivate) {
+	::mkdir((runtime_ + "/kse").c_str(), 0755);
+	::mkdir(Folder().c_str(), 0777);
+	::chmod(Folder().c_str(), 0777);  // the umask may have narrowed it
+	Child run({"--home", "Chaser:1", "--away", "none", "--start-playing", "--quiet", "--monitor", "--monitor-wait"}, "narrowed");
+	ASSERT_FALSE(WaitForFile(run.Pid()).empty()) << run.Err();
+	EXPECT_EQ(Mode(Folder()), 0700u);
+	EXPECT_EQ(Mode(runtime_ + "/kse"), 0700u);
+}
+
+TEST_F(Announcement, CtrlCRemovesIt) {
+	Child run({"--home", "Chaser:1", "--away", "none", "--start-playing", "--quiet", "--monitor", "--monitor-wait"}, "announced-int");
+	const std::string path = WaitForFile(run.Pid());
+	ASSERT_FALSE(path.empty()) << run.Err();
+	run.Signal(SIGINT);
+	const int status = run.Wait();
+	ASSERT_TRUE(WIFEXITED(status)) << run.Err();
+	EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+	EXPECT_NE(::access(path.c_str(), F_OK), 0) << path << " is still there after SIGINT";
+	EXPECT_TRUE(Empty());
+}
+
+TEST_F(Announcement, AHangRemovesIt) {
+	Child run({"--home", "Hanger:1", "--away", "none", "--start-playing", "--duration", "60", "--quiet", "--hang-limit", "1", "--monitor"}, "announced-hang");
+	ASSERT_FALSE(WaitForFile(run.Pid()).empty()) << run.Err();
+	const int status = run.Wait();
+	ASSERT_TRUE(WIFEXITED(status)) << run.Err();
+	EXPECT_EQ(WEXITSTATUS(status), 3);
+	EXPECT_THAT(run.Err(), HasSubstr("monitor on 127.0.0.1:"));
+	EXPECT_NE(::access((Folder() + "/" + std::to_string(run.Pid()) + ".json").c_str(), F_OK), 0);
+	EXPECT_TRUE(Empty());
+}
+
+TEST_F(Announcement, ACrashRemovesIt) {
+	// paced: the crash comes about 3.5 match seconds in, and the announcement must be seen before it
+	Child run({"--home", "Crasher:2", "--away", "Chaser:2", "--start-playing", "--duration", "60", "--quiet", "--monitor", "--speed", "2"}, "announced-crash");
+	ASSERT_FALSE(WaitForFile(run.Pid()).empty()) << run.Err();
+	const int status = run.Wait();
+	ASSERT_TRUE(WIFSIGNALED(status)) << run.Err();
+	EXPECT_THAT(run.Err(), HasSubstr("kse-match: crashed (SIGSEGV)"));
+	EXPECT_NE(::access((Folder() + "/" + std::to_string(run.Pid()) + ".json").c_str(), F_OK), 0);
+	EXPECT_TRUE(Empty());
 }

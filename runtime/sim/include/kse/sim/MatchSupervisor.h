@@ -52,6 +52,12 @@ public:
 	 * async-signal-safe calls then).
 	 */
 	void OnAbort(std::function<void(const std::string& reason, const std::string& robot, const std::string& detail)> listener);
+	/**
+	 * A file to remove when the match ends for a hang, a signal or a crash (the match's
+	 * announcement in the discovery folder, MatchDiscovery.h: a dead match must not stay listed);
+	 * empty: none. One path, at most 511 bytes (it is kept where a crash handler can reach it).
+	 */
+	void RemoveAtExit(const std::string& path);
 
 private:
 	struct Stuck {

@@ -85,6 +85,10 @@ public final class DiagramSocketServer implements AutoCloseable {
 		jetty.setHandler(new LoopbackGuard(context));
 		ServedFolder served = new ServedFolder(folder);
 		context.addServlet(new ServletHolder(new ModelListServlet(served, token)), "/models");
+		// the running matches the live monitor may watch (without their keys)
+		context.addServlet(new ServletHolder(new MatchListServlet(token)), MatchListServlet.PATH);
+		// the match logs of the folder, read-only, for the page's replay
+		context.addServlet(new ServletHolder(new MatchLogServlet(served, token)), MatchLogServlet.PATH + "/*");
 		if (pages != null) {
 			context.addServlet(new ServletHolder(new PageServlet(pages)), "/*");
 		}

@@ -12,6 +12,7 @@ import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
@@ -48,6 +49,9 @@ import jakarta.websocket.server.ServerEndpointConfig;
  * an embedding host's page on another local port uses); the relay reaches 127.0.0.1 only, so a
  * page cannot make it a port scanner of other hosts; a page may only change the subscription, in
  * one small message: anything else closes its connection (1008) and no other.
+ * <p>
+ * A page names the match by its port and key ({@code ?port=P&key=K}, as kse-match printed them) or
+ * by its process id ({@code ?match=PID}), which is looked up among the {@link RunningMatches}.
  * <p>
  * Each connection has two virtual threads: one reads the match's lines, one sends them to the page,
  * several in one message when they come faster than {@link #BATCH_MILLIS} apart (at 10x a robot
@@ -103,6 +107,22 @@ public final class MonitorEndpoint extends Endpoint {
 		String key = single(session, "key");
 		String portText = single(session, "port");
 		List<String> robots = robots(single(session, "robots"));
+		String pid = single(session, "match");
+		if (pid != null) {
+			// a match picked from /matches: its port and key are looked up here, so the page never holds the key
+			if (!pid.matches("[1-9][0-9]{0,9}")) {
+				refuse("match must be the process id of a running kse-match (?match=PID, as /matches lists it)");
+				return;
+			}
+			Optional<RunningMatches.Match> running = RunningMatches.find(RunningMatches.folder(), Long.parseLong(pid));
+			if (running.isEmpty()) {
+				LOG.warn("a monitor page asked for match " + pid + ", which is not running (or not announced)");
+				close(CloseReason.CloseCodes.UNEXPECTED_CONDITION, "no running match " + pid + " (it ended, or was started without --monitor)");
+				return;
+			}
+			key = running.get().key();
+			portText = Integer.toString(running.get().port());
+		}
 		if (portText == null || !portText.matches("[0-9]{1,5}") || Integer.parseInt(portText) < 1 || Integer.parseInt(portText) > 65535) {
 			refuse("the match's port must be a number from 1 to 65535 (?port=P)");
 			return;

@@ -1,0 +1,118 @@
+package org.kse.diagram.server.websocket;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.util.List;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import org.kse.diagram.server.ServedFolder;
+
+import com.google.gson.JsonArray;
+
+import jakarta.servlet.http.HttpServlet;
+import jakarta.servlet.http.HttpServletRequest;
+import jakarta.servlet.http.HttpServletResponse;
+
+/**
+ * The match logs ({@code .jsonl}, docs/match-log.md) of the served folder, for the page's replay:
+ * {@code GET /logs?token=T} lists them as a JSON array of relative paths, {@code GET /logs/<path>?token=T}
+ * sends one as it is on disk. Read-only (GET only) and only with the session token: a log shows
+ * what the robots did, and the folder may be a workspace. Names are restricted as the page's files
+ * are ({@code [A-Za-z0-9._/-]}, no {@code ..}, no hidden segment) and must resolve, links followed,
+ * to a regular file inside the folder.
+ */
+final class MatchLogServlet extends HttpServlet {
+
+	private static final long serialVersionUID = 1L;
+
+	/** Where the servlet is mapped ({@code PATH/*}, which also matches {@code PATH} alone). */
+	static final String PATH = "/logs";
+
+	static final String EXTENSION = ".jsonl";
+
+	private static final Pattern NAME = Pattern.compile("[A-Za-z0-9._/-]+");
+
+	private final transient ServedFolder folder;
+	private final byte[] token;
+
+	MatchLogServlet(ServedFolder folder, String token) {
+		this.folder = folder;
+		this.token = token.getBytes(StandardCharsets.UTF_8);
+	}
+
+	@Override
+	protected void doGet(HttpServletRequest request, HttpServletResponse response) throws IOException {
+		String given = request.getParameter("token");
+		if (given == null || !MessageDigest.isEqual(token, given.getBytes(StandardCharsets.UTF_8))) {
+			response.sendError(HttpServletResponse.SC_FORBIDDEN, "the session token is missing or wrong");
+			return;
+		}
+		response.setHeader("Cache-Control", "no-store");
+		response.setHeader("X-Content-Type-Options", "nosniff");
+		String info = request.getPathInfo();
+		if (info == null || info.equals("/")) {
+			JsonArray logs = new JsonArray();
+			for (String log : logs(folder)) {
+				logs.add(log);
+			}
+			response.setContentType("application/json; charset=utf-8");
+			response.getWriter().write(logs.toString());
+			return;
+		}
+		Path file = resolve(folder, info.substring(1));
+		if (file == null) {
+			response.sendError(HttpServletResponse.SC_NOT_FOUND, "no such match log in the served folder");
+			return;
+		}
+		try (InputStream in = Files.newInputStream(file)) {
+			// a log being written grows while it is sent: the length is not known in advance
+			response.setContentType("application/x-ndjson; charset=utf-8");
+			try (OutputStream out = response.getOutputStream()) {
+				in.transferTo(out);
+			}
+		} catch (NoSuchFileException e) {
+			response.sendError(HttpServletResponse.SC_NOT_FOUND, "no such match log in the served folder");
+		}
+	}
+
+	/**
+	 * The log a page names, or null when the name is not one of a log of the folder: another
+	 * extension, characters outside the page's set, {@code ..} or a hidden segment, a file that is
+	 * missing, not regular, or (links followed) outside the folder.
+	 */
+	static Path resolve(ServedFolder folder, String name) {
+		if (!NAME.matcher(name).matches() || !name.endsWith(EXTENSION) || name.startsWith("/")) {
+			return null;
+		}
+		for (String segment : name.split("/")) {
+			if (segment.isEmpty() || segment.startsWith(".")) {
+				return null;
+			}
+		}
+		Path file = folder.root().resolve(name).normalize();
+		try {
+			if (!file.startsWith(folder.root()) || !Files.isRegularFile(file) || !file.toRealPath().startsWith(folder.root().toRealPath())) {
+				return null;
+			}
+		} catch (IOException e) {
+			return null;
+		}
+		return file;
+	}
+
+	/** The .jsonl files under the folder (8 levels deep at most), as sorted relative paths with forward slashes. */
+	static List<String> logs(ServedFolder folder) throws IOException {
+		try (Stream<Path> files = Files.walk(folder.root(), 8)) {
+			return files.filter(file -> file.getFileName().toString().endsWith(EXTENSION) && Files.isRegularFile(file))
+					.map(file -> folder.root().relativize(file).toString().replace('\\', '/'))
+					.filter(path -> !path.startsWith(".") && !path.contains("/.") && NAME.matcher(path).matches()).sorted().toList();
+		}
+	}
+}
