@@ -5,7 +5,7 @@
 #      KSE Maven plugin and bundles from there), a smoke test of the workbench product archives, and the diagram
 #      notation's layout benchmark, the update site installed into a bare Eclipse, the workbench's
 #      start benchmark, the diagram server's benchmark, the diagram editor's
-#      end-to-end tests and benchmark in headless Chromium;
+#      benchmark in headless Chromium;
 #   2. the C++ runtime's GoogleTest suite, plainly and under AddressSanitizer and ThreadSanitizer;
 #      the engine's comparison with a switch, Boost.Statechart and Qt SCXML (figures only);
 #   3. the engine conformance suite (tests/conformance: every case's statechart generated, run
@@ -14,6 +14,8 @@
 #   4. the examples built with their activities, driven by scripts and played on the simulated
 #      field (scenarios over 20 seeds), a short match, the simulator's benchmark; projects outside
 #      the repository built with the runtime's CMake package and with the KSE Maven plugin; the
+#      diagram page's end-to-end tests in headless Chromium (editor, live monitor and replay, with
+#      real matches) and the monitor's and replay's benchmarks; the
 #      getting-started page followed command by command; `kse demo`;
 #   5. the command line's start benchmark and a smoke run of the kse command on the bundled example.
 set -euo pipefail
@@ -29,8 +31,10 @@ if [ -z "${JAVA_HOME:-}" ]; then
 fi
 out="$PWD/target/test"
 mkdir -p "$out"
+# Each step's heading says when it started, so a slow step shows in CI's log (CI has 30 minutes).
+section() { printf '== [%d:%02d] %s\n' $((SECONDS / 60)) $((SECONDS % 60)) "$1"; }
 
-echo "== Java: Tycho build and JUnit tests (the workbench's UI tests on a virtual display)"
+section "Java: Tycho build and JUnit tests (the workbench's UI tests on a virtual display)"
 if [ -z "${DISPLAY:-}" ]; then
   xvfb-run -a -s "-screen 0 1280x1024x24" ./mvnw -B clean install
 else
@@ -41,27 +45,27 @@ for bundle in tests/org.kse.ui.tests tests/org.kse.ui.formula.tests tests/org.ks
   echo "   screenshots of ${bundle#tests/}: $(ls "$bundle/target/screenshots" 2>/dev/null | tr '\n' ' ')"
 done
 
-echo "== The workbench product: Linux archive started under Xvfb, Windows archive listed"
+section "The workbench product: Linux archive started under Xvfb, Windows archive listed"
 tests/product/smoke.sh "$out/product"
 
-echo "== The update site installed with the p2 director into a bare Eclipse platform, started with a statechart"
+section "The update site installed with the p2 director into a bare Eclipse platform, started with a statechart"
 tests/product/install-into-eclipse.sh "$out/install-into-eclipse"
 
-echo "== Workbench start: KSE next to a bare Eclipse platform, warm (benchmark, figures only)"
+section "Workbench start: KSE next to a bare Eclipse platform, warm (benchmark, figures only)"
 bench/workbench-start.sh 3 || echo "   (the start benchmark did not finish; figures are never a failure)"
 
-echo "== Diagram notation: a 1,000-state statechart opened and arranged with ELK (benchmark)"
+section "Diagram notation: a 1,000-state statechart opened and arranged with ELK (benchmark)"
 bench/notation.sh 2>&1 | grep -v -e '^log4j:' -e '^WARNING:'
 
-echo "== Diagram server: open a 1,000-state statechart, move in a 500-state one, over the WebSocket (benchmark)"
+section "Diagram server: open a 1,000-state statechart, move in a 500-state one, over the WebSocket (benchmark)"
 bench/diagram.sh 2>&1 | grep -v -e '^log4j:' -e '^WARNING:'
 
-echo "== Diagram editor in headless Chromium: open 1,000 states, move in them and in the Goalie (benchmark, figures only)"
+section "Diagram editor in headless Chromium: open 1,000 states, move in them and in the Goalie (benchmark, figures only)"
 bench/diagram-browser.sh || echo "   (the browser benchmark did not finish; figures are never a failure)"
 
 runtime_suite() { # name, extra cmake options...
   local name="$1"; shift
-  echo "== C++ runtime: $name"
+  section "C++ runtime: $name"
   cmake -S runtime -B "$out/runtime-$name" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" > "$out/runtime-$name.configure.log"
   cmake --build "$out/runtime-$name" -j 2
   ctest --test-dir "$out/runtime-$name" --output-on-failure -j 2
@@ -73,54 +77,54 @@ cmake --install "$out/runtime-plain" > "$out/runtime-install.log"
 (cd "$out/runtime-plain" && cpack -G DEB > "$out/runtime-cpack.log")
 ls "$out"/runtime-plain/kse-runtime_*.deb
 
-echo "== Engine against a switch, Boost.Statechart and Qt SCXML on the same charts (benchmark, figures only)"
+section "Engine against a switch, Boost.Statechart and Qt SCXML on the same charts (benchmark, figures only)"
 bench/engine-compare.sh "$out/runtime-plain" || echo "   (the comparison did not finish; figures are never a failure)"
 
-echo "== Engine conformance: the cases of tests/conformance on generated code (as Monas woke the engine, then eagerly)"
+section "Engine conformance: the cases of tests/conformance on generated code (as Monas woke the engine, then eagerly)"
 tests/conformance/run.sh "$out/runtime-prefix" "$out/conformance"
 
-echo "== Integration: generated code built against the installed runtime and driven"
+section "Integration: generated code built against the installed runtime and driven"
 tests/integration/run.sh goalie tests/data/legacy-kse/Goalie/Goalie.stct "$out/runtime-prefix" "$out/goalie"
 tests/integration/run.sh allkinds tests/org.kse.generator.monas.tests/models/AllKinds.stct "$out/runtime-prefix" "$out/allkinds"
 tests/integration/run.sh hostile tests/data/hostile/Hostile.stct "$out/runtime-prefix" "$out/hostile"
 
-echo "== Examples: Goalie, Attacker, Defender (generated from their models by the Maven build), built with their activities,"
+section "Examples: Goalie, Attacker, Defender (generated from their models by the Maven build), built with their activities,"
 echo "   driven by scripted worlds and played on the simulated field over 20 seeds"
 cmake -S examples -B "$out/examples" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_PREFIX_PATH="$out/runtime-prefix" > "$out/examples.configure.log"
 cmake --build "$out/examples" -j 2
 ctest --test-dir "$out/examples" --output-on-failure -j 2
 "$out/examples/scenario_test" --gtest_filter='Scenario.TheAttacker*:Scenario.TheGoalie*' | grep '\[ scenario \]'
 
-echo "== A short match (log and picture under $out/match.*) and the simulator's benchmark"
+section "A short match (log and picture under $out/match.*) and the simulator's benchmark"
 "$out/examples/kse-match" --seed 1 --half 120 --log "$out/match.jsonl" --svg "$out/match.svg"
 "$out/examples/match_bench" 1
 
-echo "== Diagram editor, live monitor and replay in headless Chromium against kse serve, with matches of the kse-match above"
+section "Diagram editor, live monitor and replay in headless Chromium against kse serve, with matches of the kse-match above"
 echo "   (screenshots: tests/org.kse.diagram.e2e/target/screenshots)"
 KSE_MATCH="$out/examples/kse-match" tests/org.kse.diagram.e2e/run.sh
 
-echo "== Live monitor: all 10 robots of a 5-against-5 match on one board in headless Chromium, at 1x and 10x (benchmark, figures only)"
+section "Live monitor: all 10 robots of a 5-against-5 match on one board in headless Chromium, at 1x and 10x (benchmark, figures only)"
 bench/monitor.sh "$out/examples/kse-match" || echo "   (the monitor benchmark did not finish; figures are never a failure)"
 
-echo "== Replay: a 10-minute 5-against-5 match log opened and scrubbed in kse serve's page in headless Chromium (benchmark, figures only)"
+section "Replay: a 10-minute 5-against-5 match log opened and scrubbed in kse serve's page in headless Chromium (benchmark, figures only)"
 bench/replay.sh "$out/examples/kse-match" || echo "   (the replay benchmark did not finish; figures are never a failure)"
 
-echo "== A project outside the repository builds its behaviour with the runtime's CMake package (kse_add_statechart)"
+section "A project outside the repository builds its behaviour with the runtime's CMake package (kse_add_statechart)"
 tests/cmake-package/run.sh "$out/runtime-prefix" "$out/cmake-package"
 
-echo "== Getting started: docs/getting-started.md's commands in a fresh folder (kse new-behaviour, build, play, edit, play again; name clashes)"
+section "Getting started: docs/getting-started.md's commands in a fresh folder (kse new-behaviour, build, play, edit, play again; name clashes)"
 tests/getting-started/run.sh "$out/runtime-prefix" "$out/getting-started"
 
-echo "== A Maven build outside the repository validates and generates offline (kse:validate, kse:generate, incremental skip)"
+section "A Maven build outside the repository validates and generates offline (kse:validate, kse:generate, incremental skip)"
 tests/maven-plugin/run.sh
 
-echo "== kse demo (the README's first command) on the runtime installed above"
+section "kse demo (the README's first command) on the runtime installed above"
 KSE_RUNTIME_PREFIX="$out/runtime-prefix" ./kse demo --out "$out/demo" --half 60
 
-echo "== kse command line: whole processes, the launcher against the Equinox start (benchmark, figures only)"
+section "kse command line: whole processes, the launcher against the Equinox start (benchmark, figures only)"
 bench/cli.sh 3 || echo "   (the command line benchmark did not finish; figures are never a failure)"
 
-echo "== kse smoke run"
+section "kse smoke run"
 ./kse transform -q examples/Goalie/Goalie.liveness -o "$out/Goalie.stct"
 ./kse validate "$out/Goalie.stct"
 ./kse label "$out/Goalie.stct"

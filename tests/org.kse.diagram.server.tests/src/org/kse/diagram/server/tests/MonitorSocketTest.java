@@ -5,19 +5,13 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.BufferedReader;
-import java.io.IOException;
-import java.io.InputStreamReader;
-import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.WebSocket;
 import java.net.http.WebSocketHandshakeException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -34,10 +28,12 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kse.diagram.server.websocket.DiagramSocketServer;
+import org.kse.testing.FakeMatch;
 
 /**
- * The live monitor's relay ({@code /monitor}) between a page and a kse-match, here a fake match: a
- * ServerSocket that checks what the relay says to it and plays a scripted stream of lines.
+ * The live monitor's relay ({@code /monitor}) between a page and a kse-match, here a fake match
+ * ({@link FakeMatch}) whose side the tests speak themselves: they check what the relay says to it
+ * and play a scripted stream of lines.
  */
 class MonitorSocketTest {
 
@@ -47,57 +43,6 @@ class MonitorSocketTest {
 	Path folder;
 	private DiagramSocketServer server;
 	private FakeMatch match;
-
-	/** A kse-match as far as the relay can tell: a loopback port that speaks JSON lines. */
-	private static final class FakeMatch implements AutoCloseable {
-		final ServerSocket listener;
-
-		FakeMatch() throws IOException {
-			listener = new ServerSocket(0, 10, InetAddress.getLoopbackAddress());
-			listener.setSoTimeout(10_000);
-		}
-
-		int port() {
-			return listener.getLocalPort();
-		}
-
-		Peer accept() throws IOException {
-			return new Peer(listener.accept());
-		}
-
-		@Override
-		public void close() throws IOException {
-			listener.close();
-		}
-	}
-
-	/** One client of the fake match. */
-	private static final class Peer implements AutoCloseable {
-		final Socket socket;
-		final BufferedReader in;
-		final OutputStream out;
-
-		Peer(Socket socket) throws IOException {
-			this.socket = socket;
-			socket.setSoTimeout(10_000);
-			in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.UTF_8));
-			out = socket.getOutputStream();
-		}
-
-		String readLine() throws IOException {
-			return in.readLine();
-		}
-
-		void send(String line) throws IOException {
-			out.write((line + "\n").getBytes(StandardCharsets.UTF_8));
-			out.flush();
-		}
-
-		@Override
-		public void close() throws IOException {
-			socket.close();
-		}
-	}
 
 	/** A page: queues the lines it receives (a message may carry several) and how its connection closed. */
 	private static final class Page implements WebSocket.Listener {
@@ -146,7 +91,7 @@ class MonitorSocketTest {
 	void start() throws Exception {
 		Files.copy(Path.of(System.getProperty("kse.examples"), "Goalie", "Goalie.stct"), folder.resolve("Goalie.stct"));
 		server = DiagramSocketServer.start(folder, 0);
-		match = new FakeMatch();
+		match = new FakeMatch(KEY, 1, List.of());
 	}
 
 	@AfterEach
@@ -174,7 +119,7 @@ class MonitorSocketTest {
 			script.add("{\"type\":\"taken\",\"t\":" + i / 100.0 + ",\"robot\":\"home-1\",\"tr\":" + i % 60 + ",\"from\":\"0.1\",\"to\":\"0.2\",\"n\":" + i + "}");
 		}
 		script.add("{\"type\":\"result\",\"t\":20.0,\"state\":\"FINISHED\",\"score\":[1,0]}");
-		try (Peer peer = match.accept()) {
+		try (FakeMatch.Peer peer = match.accept()) {
 			assertEquals("{\"type\":\"hello\",\"token\":\"" + KEY + "\"}", peer.readLine(), "the hello carries the match's key");
 			assertEquals("{\"type\":\"subscribe\",\"robots\":[\"home-1\",\"away-3\"]}", peer.readLine(), "the subscription names the page's robots");
 			for (String line : script) {
@@ -194,7 +139,7 @@ class MonitorSocketTest {
 	void withoutRobotsThePageWatchesEveryRobotAndItsSubscriptionsAreForwarded() throws Exception {
 		Page page = new Page();
 		WebSocket socket = open(monitor(server.token(), match.port(), null), page);
-		try (Peer peer = match.accept()) {
+		try (FakeMatch.Peer peer = match.accept()) {
 			assertTrue(peer.readLine().contains("\"hello\""));
 			assertEquals("{\"type\":\"subscribe\",\"robots\":[\"*\"]}", peer.readLine(), "no robots named: every robot");
 			socket.sendText("{\"type\":\"subscribe\",\"robots\":[\"away-2\"]}", true).get(5, TimeUnit.SECONDS);
@@ -212,8 +157,7 @@ class MonitorSocketTest {
 			open(monitor(token, match.port(), "home-1"), page);
 			assertTrue(page.closedWith().startsWith("1008"), "closed for a policy violation: " + token);
 		}
-		match.listener.setSoTimeout(500);
-		assertThrows(SocketTimeoutException.class, match::accept, "no connection to the match without the token");
+		assertThrows(SocketTimeoutException.class, () -> match.accept(500), "no connection to the match without the token");
 	}
 
 	@Test
@@ -229,7 +173,7 @@ class MonitorSocketTest {
 			Page page = new Page();
 			HttpClient.newHttpClient().newWebSocketBuilder().header("Origin", origin).buildAsync(monitor(server.token(), match.port(), "home-1"), page)
 					.get(10, TimeUnit.SECONDS);
-			try (Peer peer = match.accept()) {
+			try (FakeMatch.Peer peer = match.accept()) {
 				assertTrue(peer.readLine().contains("hello"), "this server's own page is relayed: " + origin);
 			}
 			page.closedWith();
@@ -241,9 +185,9 @@ class MonitorSocketTest {
 		Page large = new Page();
 		Page other = new Page();
 		WebSocket largeSocket = open(monitor(server.token(), match.port(), "home-1"), large);
-		try (Peer first = match.accept()) {
+		try (FakeMatch.Peer first = match.accept()) {
 			open(monitor(server.token(), match.port(), "home-1"), other);
-			try (Peer second = match.accept()) {
+			try (FakeMatch.Peer second = match.accept()) {
 				first.readLine();
 				first.readLine();
 				second.readLine();
@@ -272,7 +216,7 @@ class MonitorSocketTest {
 		for (String message : messages) {
 			Page page = new Page();
 			WebSocket socket = open(monitor(server.token(), match.port(), "home-1"), page);
-			try (Peer peer = match.accept()) {
+			try (FakeMatch.Peer peer = match.accept()) {
 				peer.readLine();
 				peer.readLine();
 				socket.sendText(message, true);
@@ -302,7 +246,7 @@ class MonitorSocketTest {
 	void aPageThatLeavesLetsGoOfTheMatch() throws Exception {
 		Page page = new Page();
 		WebSocket socket = open(monitor(server.token(), match.port(), "home-1"), page);
-		try (Peer peer = match.accept()) {
+		try (FakeMatch.Peer peer = match.accept()) {
 			peer.readLine();
 			peer.readLine();
 			socket.sendClose(WebSocket.NORMAL_CLOSURE, "bye").get(5, TimeUnit.SECONDS);
