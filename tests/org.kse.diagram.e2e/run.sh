@@ -2,7 +2,8 @@
 # End-to-end tests of the diagram editor page: starts the diagram server on a temporary folder
 # (a copy of examples/Goalie), runs tests/*.test.mjs with `node --test` in headless Chromium
 # (Debian's /usr/bin/chromium, or $CHROMIUM), and stops the server. Screenshots of every step go
-# to target/screenshots/, the server's output to target/server.log.
+# to target/screenshots/ (emptied when tests run, not for a --script), the server's output to
+# target/server.log.
 #
 # The server is started like /tmp/kse-serve-ready does it:
 #   <repository>/kse serve <folder> --pages <repository>/bundles/org.kse.diagram.client/dist
@@ -31,7 +32,11 @@ if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modu
 fi
 
 mkdir -p target
-rm -rf target/screenshots target/downloads
+# a test run starts with no screenshots but its own; a --script run (a benchmark, which takes none)
+# keeps those of the run before it (test.sh runs the benchmarks right after the suite)
+if [ "${1:-}" != --script ]; then
+  rm -rf target/screenshots target/downloads
+fi
 folder="$(mktemp -d "${TMPDIR:-/tmp}/kse-e2e-models.XXXXXX")"
 cp "$repository/examples/Goalie/Goalie.stct" "$folder/"
 

@@ -4,27 +4,14 @@
 #include <cstdio>
 #include <sstream>
 
+#include <kse/robot/MonitorServer.h>
+
 namespace kse::sim {
 
 std::string JsonString(const std::string& text) {
-	std::string out = "\"";
-	for (const char c : text) {
-		switch (c) {
-			case '"': out += "\\\""; break;
-			case '\\': out += "\\\\"; break;
-			case '\n': out += "\\n"; break;
-			case '\t': out += "\\t"; break;
-			default:
-				if (static_cast<unsigned char>(c) < 0x20) {
-					char escaped[8];
-					std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-					out += escaped;
-				} else {
-					out += c;
-				}
-		}
-	}
-	return out + "\"";
+	std::string out;
+	robot::AppendJsonString(out, text);
+	return out;
 }
 
 std::string Fixed(double value, int digits) {

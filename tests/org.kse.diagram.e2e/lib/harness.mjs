@@ -1,6 +1,7 @@
 // Shared helpers of the diagram end-to-end tests: the browser, the page of a model, screenshots,
 // the client model (window.kse) and the served folder. run.sh starts the server and passes
 // KSE_E2E_URL (a page URL with the session token) and KSE_E2E_FOLDER (the served folder).
+import { after, before } from 'node:test';
 import { chromium } from 'playwright-core';
 import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
@@ -78,6 +79,48 @@ export async function launch() {
         rmSync(profile, { recursive: true, force: true });
     };
     return { context, close };
+}
+
+/**
+ * The browser of a test file: launched before its tests (unless the file's tests are all skipped:
+ * `skip` is their node:test skip), closed after them with the pages a test left open. Its `context`
+ * is there once the tests run.
+ */
+export function fileBrowser({ skip = false } = {}) {
+    const browser = {};
+    before(async () => {
+        if (!skip) {
+            Object.assign(browser, await launch());
+        }
+    });
+    after(async () => {
+        await closePages();
+        await browser.close?.();
+    });
+    return browser;
+}
+
+/** The kse-match of the tests that play a match (KSE_MATCH), or undefined. */
+export const kseMatch = process.env.KSE_MATCH;
+
+/**
+ * node:test's skip for the tests of a file (its import.meta.url) that watch a kse-match built with
+ * --monitor: false when KSE_MATCH gives one, otherwise how to run them.
+ */
+export function skipWithoutKseMatch(testFileUrl) {
+    const file = path.basename(fileURLToPath(testFileUrl));
+    return kseMatch ? false : `KSE_MATCH is not set: give it a kse-match built with --monitor (e.g. KSE_MATCH=build/examples/kse-match run.sh tests/${file})`;
+}
+
+/**
+ * The engine's name of a state (GenerationPlan.stateName), as the match log and the monitor name
+ * active states: Node_ and its name, or its label with '_' for what is not a letter or digit.
+ */
+export function engineName(state) {
+    const label = state.args?.label ?? '';
+    const name = state.args?.name ?? '';
+    const byLabel = name === '' || name === label;
+    return 'Node_' + (byLabel ? (label === '' ? 'unlabeled' : label.replace(/[^A-Za-z0-9_]/g, '_')) : name);
 }
 
 const openPages = new Set();

@@ -2,35 +2,23 @@
 // the server's /monitor relay. The match's own log is the reference: the page must have received
 // every transition the log lists for home-1, and must show as active exactly the states the log's
 // last frame names. Needs a kse-match built with --monitor (the examples' one): KSE_MATCH=<binary>.
-import { test, after, before } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
-import { closePages, copyGoalie, launch, modelRoot, openModel, pageUrl, screenshotter, states } from '../lib/harness.mjs';
+import { copyGoalie, engineName, fileBrowser, kseMatch, modelRoot, openModel, pageUrl, screenshotter, skipWithoutKseMatch, states } from '../lib/harness.mjs';
 
-const binary = process.env.KSE_MATCH;
-const skip = binary ? false : 'KSE_MATCH is not set: give it a kse-match built with --monitor (e.g. KSE_MATCH=build/examples/kse-match run.sh tests/16-monitor.test.mjs)';
+const skip = skipWithoutKseMatch(import.meta.url);
 
-let browser;
+const browser = fileBrowser({ skip });
 const shot = screenshotter('16-monitor');
-
-before(async () => {
-    if (!skip) {
-        browser = await launch();
-    }
-});
-
-after(async () => {
-    await closePages();
-    await browser?.close();
-});
 
 /** Starts the match; resolves with its monitor's port and key once it printed them (standard error). */
 function startMatch(log) {
-    const match = spawn(binary, ['--seed', '1', '--half', '20', '--start-playing', '--monitor', '--monitor-wait', '--speed', '10', '--quiet', '--log', log], {
+    const match = spawn(kseMatch, ['--seed', '1', '--half', '20', '--start-playing', '--monitor', '--monitor-wait', '--speed', '10', '--quiet', '--log', log], {
         stdio: ['ignore', 'pipe', 'pipe']
     });
     let stderr = '';
@@ -49,14 +37,6 @@ function startMatch(log) {
         match.on('exit', () => reject(new Error(`kse-match ended before it printed the monitor line: ${stderr}`)));
     });
     return { match, monitor, exited };
-}
-
-/** The engine's name of a state (GenerationPlan.stateName): Node_ and its name, or its label with '_' for what is not a letter or digit. */
-function engineName(state) {
-    const label = state.args?.label ?? '';
-    const name = state.args?.name ?? '';
-    const byLabel = name === '' || name === label;
-    return 'Node_' + (byLabel ? (label === '' ? 'unlabeled' : label.replace(/[^A-Za-z0-9_]/g, '_')) : name);
 }
 
 function percentile(sorted, p) {

@@ -4,27 +4,18 @@
 // here, apart from the page) is the reference. A log cut short, one of another version and a file
 // that is not a log open with a message. data/seed3-half10.jsonl is a real log of the examples'
 // kse-match (data/README.md); with KSE_MATCH=<kse-match> a fresh seeded match is replayed as well.
-import { test, after, before } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { copyFileSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { closePages, launch, moduleDir, pageUrl, screenshotter, servedFolder, states } from '../lib/harness.mjs';
+import { engineName, fileBrowser, moduleDir, pageUrl, screenshotter, servedFolder, states } from '../lib/harness.mjs';
 
 const dataLog = path.join(moduleDir, 'data', 'seed3-half10.jsonl');
 const binary = process.env.KSE_MATCH;
 
-let browser;
+const browser = fileBrowser();
 const shot = screenshotter('17-replay');
-
-before(async () => {
-    browser = await launch();
-});
-
-after(async () => {
-    await closePages();
-    await browser?.close();
-});
 
 /** Opens the replay of a log of the served folder; resolves once it is ready or failed. */
 async function openReplay(log, extra = {}) {
@@ -55,14 +46,6 @@ function records(file) {
         .split('\n')
         .filter(line => line.length > 0)
         .map(line => JSON.parse(line));
-}
-
-/** The engine's name of a state (GenerationPlan.stateName): Node_ and its name, or its label with '_' for what is not a letter or digit. */
-function engineName(state) {
-    const label = state.args?.label ?? '';
-    const name = state.args?.name ?? '';
-    const byLabel = name === '' || name === label;
-    return 'Node_' + (byLabel ? (label === '' ? 'unlabeled' : label.replace(/[^A-Za-z0-9_]/g, '_')) : name);
 }
 
 /** The chart's frame: the diagram page of the selected robot. */

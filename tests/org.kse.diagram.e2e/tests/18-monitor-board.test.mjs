@@ -3,38 +3,18 @@
 // and the robots chosen open side by side, each its own diagram and list in a frame, all following
 // the match to its end as its log says. A robot whose behaviour has no model in the served folder
 // gets a message instead of a diagram. Needs a kse-match built with --monitor: KSE_MATCH=<binary>.
-import { test, after, before } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { closePages, launch, pageUrl, screenshotter, states } from '../lib/harness.mjs';
+import { engineName, fileBrowser, kseMatch, pageUrl, screenshotter, skipWithoutKseMatch, states } from '../lib/harness.mjs';
 
-const binary = process.env.KSE_MATCH;
-const skip = binary ? false : 'KSE_MATCH is not set: give it a kse-match built with --monitor (e.g. KSE_MATCH=build/examples/kse-match run.sh tests/18-monitor-board.test.mjs)';
+const skip = skipWithoutKseMatch(import.meta.url);
 
-let browser;
+const browser = fileBrowser({ skip });
 const shot = screenshotter('18-monitor-board');
-
-before(async () => {
-    if (!skip) {
-        browser = await launch();
-    }
-});
-
-after(async () => {
-    await closePages();
-    await browser?.close();
-});
-
-/** The engine's name of a state (GenerationPlan.stateName), as the match log names active states. */
-function engineName(state) {
-    const label = state.args?.label ?? '';
-    const name = state.args?.name ?? '';
-    const byLabel = name === '' || name === label;
-    return 'Node_' + (byLabel ? (label === '' ? 'unlabeled' : label.replace(/[^A-Za-z0-9_]/g, '_')) : name);
-}
 
 /** A page of the server at this query (the served folder has examples/Goalie/Goalie.stct, and no Defender.stct). */
 async function open(query) {
@@ -55,7 +35,7 @@ test('a running match is picked, and two of its robots are watched side by side 
     const log = path.join(folder, 'm.jsonl');
     // waits for the first watcher: the picker and the board are looked at before it starts
     const match = spawn(
-        binary,
+        kseMatch,
         ['--seed', '3', '--half', '15', '--start-playing', '--home', 'Goalie:1,Defender:2', '--away', 'Goalie:1', '--monitor', '--monitor-wait', '--speed', '10', '--quiet', '--log', log],
         { stdio: ['ignore', 'pipe', 'pipe'] }
     );

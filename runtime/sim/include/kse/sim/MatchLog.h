@@ -91,7 +91,7 @@ std::string ResultRecord(const Match& match);
 /** {"type":"aborted",...}: a match that could not end ({@code robot} may be empty). */
 std::string AbortedRecord(double time, const std::string& reason, const std::string& robot, const std::string& detail);
 
-/** A JSON string literal. */
+/** A JSON string literal (robot::AppendJsonString, the escaping the live monitor uses too). */
 std::string JsonString(const std::string& text);
 /** A number with {@code digits} decimals, "-0.000" written as "0.000". */
 std::string Fixed(double value, int digits = 3);

@@ -2,8 +2,6 @@ package org.kse.diagram.server.websocket;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import java.util.Collection;
 import java.util.List;
 import java.util.concurrent.Executors;
@@ -65,22 +63,20 @@ public final class DiagramEndpoint extends WebSocketEndpoint<GLSPClient> {
 	private static final Logger LOG = LogManager.getLogger("org.kse.diagram");
 
 	private final Supplier<Injector> injectors;
-	private final byte[] token;
+	private final SessionToken token;
 	private GLSPServer server;
 
 	DiagramEndpoint(Supplier<Injector> injectors, String token) {
 		this.injectors = injectors;
-		this.token = token.getBytes(StandardCharsets.UTF_8);
+		this.token = new SessionToken(token);
 	}
 
 	@Override
 	public void onOpen(Session session, EndpointConfig config) {
-		List<String> presented = session.getRequestParameterMap().get("token");
-		byte[] given = presented == null || presented.size() != 1 ? new byte[0] : presented.get(0).getBytes(StandardCharsets.UTF_8);
-		if (!MessageDigest.isEqual(token, given)) {
+		if (!token.isPresentedIn(session)) {
 			LOG.warn("refused a diagram connection without the session token");
 			try {
-				session.close(new CloseReason(CloseReason.CloseCodes.VIOLATED_POLICY, "the session token is missing or wrong"));
+				session.close(new CloseReason(CloseReason.CloseCodes.VIOLATED_POLICY, SessionToken.REFUSAL));
 			} catch (IOException e) {
 				LOG.debug("closing a refused connection: " + e.getMessage());
 			}

@@ -5,7 +5,6 @@ import java.net.URL;
 import java.nio.file.Path;
 import java.security.SecureRandom;
 import java.util.Base64;
-import java.util.List;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
 
@@ -27,9 +26,6 @@ import org.kse.diagram.server.StatechartServerModule;
 import com.google.inject.Guice;
 import com.google.inject.Injector;
 
-import jakarta.websocket.Extension;
-import jakarta.websocket.HandshakeResponse;
-import jakarta.websocket.server.HandshakeRequest;
 import jakarta.websocket.server.ServerEndpointConfig;
 
 /**
@@ -93,54 +89,19 @@ public final class DiagramSocketServer implements AutoCloseable {
 			context.addServlet(new ServletHolder(new PageServlet(pages)), "/*");
 		}
 		JakartaWebSocketServletContainerInitializer.configure(context, (servletContext, container) -> {
-			container.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH).configurator(new EndpointConfigurator(injectors, token)).build());
+			container.addEndpoint(ServerEndpointConfig.Builder.create(DiagramEndpoint.class, PATH)
+					.configurator(new EndpointConfigurator(() -> new DiagramEndpoint(injectors, token), DiagramSocketServer::isLocalOrigin)).build());
 			// the live monitor's relay to a kse-match on this machine (the port is known once Jetty listens)
 			container.addEndpoint(ServerEndpointConfig.Builder.create(MonitorEndpoint.class, MonitorEndpoint.PATH)
-					.configurator(new MonitorEndpoint.Configurator(token, connector::getLocalPort)).build());
+					.configurator(new EndpointConfigurator(() -> new MonitorEndpoint(token), MonitorEndpoint.ownPages(connector::getLocalPort))).build());
 		});
 		jetty.start();
 		return new DiagramSocketServer(jetty, token, served);
 	}
 
-	/**
-	 * Makes each connection's endpoint and answers the handshake questions itself: the Jakarta
-	 * default configurator is found through {@link java.util.ServiceLoader}, which does not see
-	 * across OSGi bundles and fails the handshake with an HTTP 500.
-	 */
-	private static final class EndpointConfigurator extends ServerEndpointConfig.Configurator {
-		private final Supplier<Injector> injectors;
-		private final String token;
-
-		EndpointConfigurator(Supplier<Injector> injectors, String token) {
-			this.injectors = injectors;
-			this.token = token;
-		}
-
-		@Override
-		public <T> T getEndpointInstance(Class<T> endpointClass) {
-			return endpointClass.cast(new DiagramEndpoint(injectors, token));
-		}
-
-		@Override
-		public boolean checkOrigin(String origin) {
-			// browsers send the page's origin; only pages served from this machine may connect
-			return origin == null || origin.isEmpty() || origin.equals("null") || LOCAL_ORIGIN.matcher(origin).matches();
-		}
-
-		@Override
-		public String getNegotiatedSubprotocol(List<String> supported, List<String> requested) {
-			return "";
-		}
-
-		@Override
-		public List<Extension> getNegotiatedExtensions(List<Extension> installed, List<Extension> requested) {
-			return List.of();
-		}
-
-		@Override
-		public void modifyHandshake(ServerEndpointConfig config, HandshakeRequest request, HandshakeResponse response) {
-			// nothing to add: the token travels in the query and is checked when the endpoint opens
-		}
+	/** The pages {@code /kse} accepts: browsers send the page's origin, and only pages served from this machine may connect. */
+	private static boolean isLocalOrigin(String origin) {
+		return origin == null || origin.isEmpty() || origin.equals("null") || LOCAL_ORIGIN.matcher(origin).matches();
 	}
 
 	/**

@@ -1,8 +1,6 @@
 package org.kse.diagram.server.websocket;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 
 import com.google.gson.JsonArray;
 
@@ -21,17 +19,15 @@ final class MatchListServlet extends HttpServlet {
 
 	private static final long serialVersionUID = 1L;
 
-	private final byte[] token;
+	private final transient SessionToken token;
 
 	MatchListServlet(String token) {
-		this.token = token.getBytes(StandardCharsets.UTF_8);
+		this.token = new SessionToken(token);
 	}
 
 	@Override
 	protected void doGet(HttpServletRequest request, HttpServletResponse response) throws IOException {
-		String given = request.getParameter("token");
-		if (given == null || !MessageDigest.isEqual(token, given.getBytes(StandardCharsets.UTF_8))) {
-			response.sendError(HttpServletResponse.SC_FORBIDDEN, "the session token is missing or wrong");
+		if (!token.admits(request, response)) {
 			return;
 		}
 		JsonArray matches = new JsonArray();

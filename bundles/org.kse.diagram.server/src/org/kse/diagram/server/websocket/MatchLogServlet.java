@@ -3,11 +3,9 @@ package org.kse.diagram.server.websocket;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.security.MessageDigest;
 import java.util.List;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -40,18 +38,16 @@ final class MatchLogServlet extends HttpServlet {
 	private static final Pattern NAME = Pattern.compile("[A-Za-z0-9._/-]+");
 
 	private final transient ServedFolder folder;
-	private final byte[] token;
+	private final transient SessionToken token;
 
 	MatchLogServlet(ServedFolder folder, String token) {
 		this.folder = folder;
-		this.token = token.getBytes(StandardCharsets.UTF_8);
+		this.token = new SessionToken(token);
 	}
 
 	@Override
 	protected void doGet(HttpServletRequest request, HttpServletResponse response) throws IOException {
-		String given = request.getParameter("token");
-		if (given == null || !MessageDigest.isEqual(token, given.getBytes(StandardCharsets.UTF_8))) {
-			response.sendError(HttpServletResponse.SC_FORBIDDEN, "the session token is missing or wrong");
+		if (!token.admits(request, response)) {
 			return;
 		}
 		response.setHeader("Cache-Control", "no-store");

@@ -1,8 +1,6 @@
 package org.kse.diagram.server.websocket;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import java.util.List;
 import java.util.stream.Stream;
 
@@ -20,18 +18,16 @@ final class ModelListServlet extends HttpServlet {
 	private static final long serialVersionUID = 1L;
 
 	private final transient ServedFolder folder;
-	private final byte[] token;
+	private final transient SessionToken token;
 
 	ModelListServlet(ServedFolder folder, String token) {
 		this.folder = folder;
-		this.token = token.getBytes(StandardCharsets.UTF_8);
+		this.token = new SessionToken(token);
 	}
 
 	@Override
 	protected void doGet(HttpServletRequest request, HttpServletResponse response) throws IOException {
-		String given = request.getParameter("token");
-		if (given == null || !MessageDigest.isEqual(token, given.getBytes(StandardCharsets.UTF_8))) {
-			response.sendError(HttpServletResponse.SC_FORBIDDEN, "the session token is missing or wrong");
+		if (!token.admits(request, response)) {
 			return;
 		}
 		JsonArray models = new JsonArray();

@@ -9,7 +9,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -17,6 +16,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.IntSupplier;
+import java.util.function.Predicate;
 import java.util.regex.Pattern;
 
 import org.apache.logging.log4j.LogManager;
@@ -31,12 +31,8 @@ import com.google.gson.JsonPrimitive;
 import jakarta.websocket.CloseReason;
 import jakarta.websocket.Endpoint;
 import jakarta.websocket.EndpointConfig;
-import jakarta.websocket.Extension;
-import jakarta.websocket.HandshakeResponse;
 import jakarta.websocket.MessageHandler;
 import jakarta.websocket.Session;
-import jakarta.websocket.server.HandshakeRequest;
-import jakarta.websocket.server.ServerEndpointConfig;
 
 /**
  * The live monitor's relay ({@code /monitor}): a page watches a running {@code kse-match --monitor}
@@ -74,7 +70,7 @@ public final class MonitorEndpoint extends Endpoint {
 	private static final Pattern ROBOT = Pattern.compile("\\*|[A-Za-z0-9_.-]{1,64}");
 	private static final int MAX_ROBOTS = 64;
 
-	private final byte[] token;
+	private final SessionToken token;
 
 	private Session session;
 	private Socket match;
@@ -91,17 +87,15 @@ public final class MonitorEndpoint extends Endpoint {
 	private int fromPageBytes;
 
 	MonitorEndpoint(String token) {
-		this.token = token.getBytes(StandardCharsets.UTF_8);
+		this.token = new SessionToken(token);
 	}
 
 	@Override
 	public void onOpen(Session session, EndpointConfig config) {
 		this.session = session;
-		List<String> presented = session.getRequestParameterMap().get("token");
-		byte[] given = presented == null || presented.size() != 1 ? new byte[0] : presented.get(0).getBytes(StandardCharsets.UTF_8);
-		if (!MessageDigest.isEqual(token, given)) {
+		if (!token.isPresentedIn(session)) {
 			LOG.warn("refused a monitor connection without the session token");
-			close(CloseReason.CloseCodes.VIOLATED_POLICY, "the session token is missing or wrong");
+			close(CloseReason.CloseCodes.VIOLATED_POLICY, SessionToken.REFUSAL);
 			return;
 		}
 		String key = single(session, "key");
@@ -428,27 +422,11 @@ public final class MonitorEndpoint extends Endpoint {
 	}
 
 	/**
-	 * Makes the endpoints of {@code /monitor} and answers the handshake itself (for the reason
-	 * {@code /kse}'s configurator does: the Jakarta default is not found across OSGi bundles).
+	 * The pages {@code /monitor} accepts: a non-browser client sends no origin; a browser sends its
+	 * page's, which must be this server's own ({@code port}: this server's, known once it listens).
 	 */
-	static final class Configurator extends ServerEndpointConfig.Configurator {
-		private final String token;
-		private final IntSupplier port;
-
-		/** {@code port}: this server's port, known once it listens (the origin of its own pages). */
-		Configurator(String token, IntSupplier port) {
-			this.token = token;
-			this.port = port;
-		}
-
-		@Override
-		public <T> T getEndpointInstance(Class<T> endpointClass) {
-			return endpointClass.cast(new MonitorEndpoint(token));
-		}
-
-		@Override
-		public boolean checkOrigin(String origin) {
-			// a non-browser client sends none; a browser sends its page's, which must be this server's own
+	static Predicate<String> ownPages(IntSupplier port) {
+		return origin -> {
 			if (origin == null || origin.isEmpty()) {
 				return true;
 			}
@@ -458,21 +436,6 @@ public final class MonitorEndpoint extends Endpoint {
 				LOG.warn("refused a monitor connection from a page of another origin");
 			}
 			return accepted;
-		}
-
-		@Override
-		public String getNegotiatedSubprotocol(List<String> supported, List<String> requested) {
-			return "";
-		}
-
-		@Override
-		public List<Extension> getNegotiatedExtensions(List<Extension> installed, List<Extension> requested) {
-			return List.of();
-		}
-
-		@Override
-		public void modifyHandshake(ServerEndpointConfig config, HandshakeRequest request, HandshakeResponse response) {
-			// the token travels in the query and is checked when the endpoint opens
-		}
+		};
 	}
 }
