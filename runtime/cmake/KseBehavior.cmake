@@ -40,6 +40,13 @@
 #       OBJECT library activity_<Activity>; a folder without CMakeLists.txt, such as common/,
 #       is left alone); the targets in <var>, to link into the program directly.
 #
+#   kse_add_simulator(<target> SOURCE_FOLDER <dir> [LIBRARIES <lib>...])
+#       A simulator program <target> (docs/simulation.md): every statechart `kse generate
+#       --no-activities` wrote under <dir>/statecharts/ linked in, each activity a stand-in that
+#       runs until the script (a conformance case, or the tool's Simulation view) finishes it.
+#       It checks conformance cases (--check) or serves a session on standard input (--serve).
+#       LIBRARIES: what the statecharts need beyond kse::runtime (a project's own messages).
+#
 #   Names: activities and statecharts register by name in one registry per program, so each
 #   name may be taken once. kse_add_statechart and kse_add_activities claim their names in the
 #   configuring project, and so do installed behaviour packages (kse_examples); a name claimed
@@ -228,4 +235,40 @@ function(kse_add_statechart name model)
   target_include_directories(statechart_${name} PUBLIC ${_out}/statecharts/${name})
   target_link_libraries(statechart_${name} PUBLIC kse::runtime)
   target_compile_features(statechart_${name} PUBLIC cxx_std_17)
+endfunction()
+
+function(kse_add_simulator target)
+  cmake_parse_arguments(ARG "" "SOURCE_FOLDER" "LIBRARIES" ${ARGN})
+  if(NOT ARG_SOURCE_FOLDER OR ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "kse_add_simulator(${target}): write kse_add_simulator(<target> SOURCE_FOLDER <dir> [LIBRARIES <lib>...])")
+  endif()
+  get_filename_component(_root ${ARG_SOURCE_FOLDER} ABSOLUTE)
+  file(GLOB _charts LIST_DIRECTORIES true ${_root}/statecharts/*)
+  set(_targets "")
+  foreach(_dir IN LISTS _charts)
+    if(IS_DIRECTORY ${_dir} AND EXISTS ${_dir}/CMakeLists.txt)
+      get_filename_component(_name ${_dir} NAME)
+      add_subdirectory(${_dir} ${CMAKE_CURRENT_BINARY_DIR}/${target}_statecharts/${_name})
+      list(APPEND _targets statechart_${_name})
+    endif()
+  endforeach()
+  if(NOT _targets)
+    message(FATAL_ERROR "kse_add_simulator(${target}): no statechart under ${_root}/statecharts (run kse generate --no-activities into ${_root})")
+  endif()
+  # The statecharts share one precompiled header: protobuf's and the engine's headers are most
+  # of their compile time.
+  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/${target}_pch.cpp "")
+  add_library(${target}_pch OBJECT ${CMAKE_CURRENT_BINARY_DIR}/${target}_pch.cpp)
+  target_link_libraries(${target}_pch PUBLIC kse::runtime ${ARG_LIBRARIES})
+  target_precompile_headers(${target}_pch PRIVATE <kse/messages/all.h> <statechart_engine/statechart_engine.h>)
+  foreach(_chart IN LISTS _targets)
+    target_precompile_headers(${_chart} REUSE_FROM ${target}_pch)
+    if(ARG_LIBRARIES)
+      target_link_libraries(${_chart} PUBLIC ${ARG_LIBRARIES})
+    endif()
+  endforeach()
+  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/${target}_main.cpp
+    "#include <kse/simulation/Simulator.h>\nint main(int argc, char** argv) { return kse::simulation::RunSimulator(argc, argv); }\n")
+  add_executable(${target} ${CMAKE_CURRENT_BINARY_DIR}/${target}_main.cpp)
+  target_link_libraries(${target} PRIVATE ${_targets} kse::simulation)
 endfunction()

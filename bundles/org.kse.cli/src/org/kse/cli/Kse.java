@@ -1,6 +1,8 @@
 package org.kse.cli;
 
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.MalformedInputException;
@@ -21,6 +23,10 @@ import org.kse.messages.ProtoProblem;
 import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
+import org.kse.simulation.RuntimePrefix;
+import org.kse.simulation.SimulationException;
+import org.kse.simulation.SimulationSession;
+import org.kse.simulation.SimulatorBuilder;
 import org.kse.transform.FormulaTransformation;
 import org.kse.validation.ModelValidation;
 
@@ -56,6 +62,8 @@ public final class Kse {
 			                      set the expression of a transition, checked first
 			  serve <folder> [--port N] [--pages DIR]
 			                      edit the folder's statecharts as diagrams in a local browser
+			  simulate <model.stct> [--runtime DIR] [--script FILE] [--save-case DIR/NAME]
+			                      run a statechart on the engine without a robot, by commands
 			  demo [--seed N] [--half SECONDS] [--out DIR]
 			                      the pipeline on the examples, then a match (the repository's ./kse)
 			  help [command]      show help
@@ -182,6 +190,37 @@ public final class Kse {
 			  --port N            the port to listen on (default: any free port)
 			  --pages DIR         serve the editor's page from DIR instead of the built-in one""";
 
+	private static final String SIMULATE_HELP = """
+			usage: kse simulate <model.stct> [--runtime DIR] [--script FILE] [--save-case DIR/NAME]
+			                    [--build-dir DIR] [-q]
+
+			Runs the statechart on the C++ engine without a robot. Its simulator is built first
+			(kse generate, then CMake and the C++ compiler, against the KSE runtime installed in
+			DIR; once per model, again only for what changed). Then each command, read from
+			standard input or from the script, runs, and what it caused is printed under it:
+			  start                                  activate the statechart
+			  publish <topic> <State|Signal|Data> <Type> { fields }
+			                                         a message, fields in protobuf text format
+			  finish <Activity>...  fail <Activity>...
+			                                         running activities return (or throw)
+			  advance <ms>                           time moves on; timers fire on the way
+			  active  running  read <topic> <Kind> <Type>
+			                                         print the active states, the running
+			                                         activities, a message
+			  breakpoints [state:<label>]... [transition:<index>]...
+			                                         an advance stops where one of them hits
+			  save DIR/NAME                          the trace so far as a conformance case
+			  quit
+			A script that lists, indented under its commands, the lines each must cause (a
+			conformance case) is checked: a difference is reported and the exit code is 1.
+			  --runtime DIR       the runtime's install prefix (default: $KSE_RUNTIME_PREFIX)
+			  --script FILE       commands from FILE instead of standard input
+			  --save-case DIR/NAME
+			                      at the end, save the trace as the case NAME: DIR/NAME.case and
+			                      DIR/NAME.stct, a copy of the model named NAME
+			  --build-dir DIR     where the simulator is built (default: ~/.cache/kse/simulators/...)
+			  -q, --quiet         no progress lines""";
+
 	private final PrintStream out;
 	private final PrintStream err;
 	private boolean quiet;
@@ -217,6 +256,7 @@ public final class Kse {
 				case "demo" -> rest.contains("--help") || rest.contains("-h") ? help(List.of("demo"))
 						: usage("kse demo runs from the repository's ./kse, which has the examples and the runtime's sources");
 				case "serve" -> serve(rest);
+				case "simulate" -> simulate(rest);
 				case "help", "-h", "--help" -> help(rest);
 				case "version", "--version" -> version();
 				default -> usage("unknown command '" + args[0] + "'");
@@ -263,6 +303,7 @@ public final class Kse {
 			case "edit-transition" -> EDIT_TRANSITION_HELP;
 			case "demo" -> DEMO_HELP;
 			case "serve" -> SERVE_HELP;
+			case "simulate" -> SIMULATE_HELP;
 			default -> USAGE;
 		});
 		return OK;
@@ -627,6 +668,57 @@ public final class Kse {
 	private static String shown(org.kse.model.statechart.Node node) {
 		String label = node.getLabel() == null ? "?" : node.getLabel();
 		return node.getName() == null || node.getName().equals(label) ? label : label + " (" + node.getName() + ")";
+	}
+
+	private int simulate(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("--runtime", "--script", "--save-case", "--build-dir"), List.of("-q", "--quiet"));
+		if (options.help) {
+			out.println(SIMULATE_HELP);
+			return OK;
+		}
+		Path file = options.single("model file");
+		quiet = options.flag("-q", "--quiet");
+		Model model = StatechartResources.load(file);
+		String script = options.value("--script");
+		List<Simulate.Step> steps = null;
+		if (script != null) {
+			try (BufferedReader reader = Files.newBufferedReader(Path.of(script), StandardCharsets.UTF_8)) {
+				steps = Simulate.readScript(reader);
+			} catch (NoSuchFileException e) {
+				throw new IOException(script + ": no such file");
+			} catch (IOException e) {
+				throw new IOException(script + ": " + e.getMessage());
+			}
+		}
+		Simulate simulate = new Simulate(out, err);
+		try {
+			Path prefix = RuntimePrefix.resolve(options.value("--runtime"));
+			Path folder = options.value("--build-dir") != null ? Path.of(options.value("--build-dir")).toAbsolutePath()
+					: SimulatorBuilder.defaultFolder(file);
+			var simulator = SimulatorBuilder.build(model, prefix, folder, Simulate.progress(err, quiet));
+			try (var session = SimulationSession.start(simulator)) {
+				boolean same = true;
+				if (steps != null) {
+					same = simulate.runScript(session, script, steps);
+				} else {
+					simulate.runInteractive(session, model, file,
+							new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8)));
+				}
+				if (options.value("--save-case") != null && simulate.save(session, model, file, Path.of(options.value("--save-case"))) == null) {
+					return FAILED;
+				}
+				return same ? OK : INVALID;
+			}
+		} catch (MonasGenerator.ModelHasErrorsException e) {
+			for (String error : e.errors()) {
+				err.println(file + ": " + withSeverity(error, "error"));
+			}
+			err.println("kse: " + file + ": " + e.errors().size() + (e.errors().size() == 1 ? " error" : " errors") + ", nothing simulated");
+			return INVALID;
+		} catch (SimulationException e) {
+			err.println("kse simulate: " + e.getMessage());
+			return FAILED;
+		}
 	}
 
 	private int serve(List<String> args) throws IOException, UsageException {
