@@ -261,6 +261,7 @@ struct MonitorServer::Client {
 	std::string out;                 // waiting to be sent, from out_at
 	std::size_t out_at = 0;
 	std::vector<bool> robots;        // subscribed, by robot
+	bool subscribed = false;         // has sent a subscribe
 };
 
 MonitorServer::MonitorServer(std::vector<std::string> robots, Options options)
@@ -429,6 +430,7 @@ MonitorServer::Verdict MonitorServer::Handle(Client& client, std::string_view li
 		}
 	}
 	any_subscribed_ = true;
+	client.subscribed = true;
 	for (std::size_t r = 0; r < robots_.size(); ++r) {
 		if (wanted[r] == client.robots[r]) continue;
 		client.robots[r] = wanted[r];
@@ -498,6 +500,12 @@ bool MonitorServer::Wants(std::size_t robot) const noexcept {
 bool MonitorServer::AnySubscribed() const noexcept {
 	std::lock_guard lock(mutex_);
 	return any_subscribed_;
+}
+
+std::size_t MonitorServer::Subscribers() const {
+	std::lock_guard lock(mutex_);
+	return static_cast<std::size_t>(std::count_if(clients_.begin(), clients_.end(),
+	                                              [](const auto& c) { return c->fd >= 0 && !c->closing && c->subscribed; }));
 }
 
 void MonitorServer::Send(std::size_t robot, std::string_view line) {

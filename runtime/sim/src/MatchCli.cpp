@@ -48,6 +48,8 @@ Plays a simulated RoboCup SPL match between the registered behaviours of this pr
   --monitor-port N   the same on port N
   --monitor-wait     with --monitor: start the match only once a monitor client has subscribed
                      (at most 60 s, then it starts anyway)
+  --monitor-watchers N  the same, once N clients have subscribed (a board of N robots sees
+                     every robot from the kick-off)
   --hang-limit SECONDS  end the match (exit status 3) when a robot's behaviour has been in one
                      call this long (default 5; 0: wait forever); the engine's watchdog names
                      the call after 1 s
@@ -142,6 +144,7 @@ int RunMatchCli(int argc, char** argv) {
 	double speed = 0;  // 0: as fast as it can
 	bool quiet = false, gamecontroller = false;
 	bool monitor = false, monitor_wait = false;
+	std::size_t monitor_watchers = 1;
 	int monitor_port = 0;
 	try {
 		for (int i = 1; i < argc; ++i) {
@@ -187,6 +190,9 @@ int RunMatchCli(int argc, char** argv) {
 				monitor_port = static_cast<int>(ParseNumber(option, value(), 1, 65535));
 			} else if (option == "--monitor-wait") {
 				monitor_wait = true;
+			} else if (option == "--monitor-watchers") {
+				monitor_wait = true;
+				monitor_watchers = static_cast<std::size_t>(ParseNumber(option, value(), 1, 16));
 			} else if (option == "--gamecontroller") {
 				gamecontroller = true;
 			} else if (option == "--home-number") {
@@ -203,7 +209,7 @@ int RunMatchCli(int argc, char** argv) {
 		config.away.players = ParseTeam(away.empty() ? home : away);
 		if (config.home.players.empty() && config.away.players.empty()) throw UsageError("both teams are empty");
 		if (config.home.number == config.away.number) throw UsageError("the teams need different numbers");
-		if (monitor_wait && !monitor) throw UsageError("--monitor-wait needs --monitor or --monitor-port");
+		if (monitor_wait && !monitor) throw UsageError("--monitor-wait and --monitor-watchers need --monitor or --monitor-port");
 	} catch (const UsageError& error) {
 		std::cerr << "kse-match: " << error.what() << "\n" << kUsage;
 		return 2;
@@ -278,8 +284,10 @@ int RunMatchCli(int argc, char** argv) {
 			} catch (const std::exception& error) {
 				std::cerr << "kse-match: monitor: " << error.what() << " (connect with the port and the token above)" << std::endl;
 			}
-			if (monitor_wait && !watcher->WaitForSubscriber(std::chrono::seconds(60))) {
-				std::cerr << "kse-match: no monitor client subscribed within 60 s; the match starts anyway" << std::endl;
+			if (monitor_wait && !watcher->WaitForSubscribers(monitor_watchers, std::chrono::seconds(60))) {
+				std::cerr << "kse-match: " << (monitor_watchers == 1 ? std::string("no monitor client")
+				                                                      : "fewer than " + std::to_string(monitor_watchers) + " monitor clients")
+				          << " subscribed within 60 s; the match starts anyway" << std::endl;
 			}
 		}
 		const auto wall_start = std::chrono::steady_clock::now();

@@ -51,11 +51,11 @@ std::string MatchMonitor::Active(std::size_t robot, double time) const {
 	return robot::ActiveRecord(time, match_.RobotId(robot), *r.index, *r.chart);
 }
 
-bool MatchMonitor::WaitForSubscriber(std::chrono::milliseconds limit) {
+bool MatchMonitor::WaitForSubscribers(std::size_t count, std::chrono::milliseconds limit) {
 	const auto deadline = std::chrono::steady_clock::now() + limit;
 	for (;;) {
 		server_.Pump();
-		if (server_.AnySubscribed()) return true;
+		if (server_.Subscribers() >= count) return true;
 		if (std::chrono::steady_clock::now() >= deadline) return false;
 		std::this_thread::sleep_for(std::chrono::milliseconds(10));
 	}

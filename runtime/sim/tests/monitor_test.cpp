@@ -241,6 +241,25 @@ TEST(Monitor, AMessageBeforeHelloASecondHelloAndUnknownTypesClose) {
 	EXPECT_EQ(early.Bytes(), 0u);
 }
 
+TEST(Monitor, AMatchWaitsForAsManyWatchersAsItWasToldAndCountsOnlyThoseConnected) {
+	Watched watched(Patrollers(1));
+	auto& server = watched.monitor.Server();
+	{
+		TestClient gone(server.Port());
+		gone.Hello(server.Token());
+		gone.Subscribe("\"*\"");
+		ASSERT_TRUE(watched.monitor.WaitForSubscribers(1, std::chrono::seconds(10)));
+	}
+	TestClient first(server.Port()), greeted(server.Port());
+	first.Hello(server.Token());
+	first.Subscribe("\"home-1\"");
+	greeted.Hello(server.Token());  // connected and greeted, but watching nothing yet
+	EXPECT_FALSE(watched.monitor.WaitForSubscribers(2, std::chrono::milliseconds(300)));
+	EXPECT_EQ(server.Subscribers(), 1u);
+	greeted.Subscribe("\"away-1\"");
+	EXPECT_TRUE(watched.monitor.WaitForSubscribers(2, std::chrono::seconds(10)));
+}
+
 TEST(Monitor, ASubscriberGetsExactlyItsRobotsTransitionsAsTheLogListsThem) {
 	Watched watched(Patrollers(3));
 	TestClient client(watched.monitor.Server().Port());
@@ -250,7 +269,7 @@ TEST(Monitor, ASubscriberGetsExactlyItsRobotsTransitionsAsTheLogListsThem) {
 	TestClient other(watched.monitor.Server().Port());
 	other.Hello(watched.monitor.Server().Token());
 	other.Subscribe("\"away-1\"");
-	ASSERT_TRUE(watched.monitor.WaitForSubscriber(std::chrono::seconds(10)));
+	ASSERT_TRUE(watched.monitor.WaitForSubscribers(2, std::chrono::seconds(10)));
 	watched.Run({&client, &other});
 	EXPECT_GT(OfType(other.Lines(), "taken").size(), 100u);
 	for (const auto& line : other.Lines()) {

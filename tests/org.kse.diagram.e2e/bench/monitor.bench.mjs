@@ -35,7 +35,7 @@ async function run(browser, { speed, half }) {
     const log = path.join(work, 'match.jsonl');
     const match = spawn(
         binary,
-        ['--seed', '1', '--half', String(half), '--start-playing', '--home', TEAM, '--away', TEAM, '--monitor', '--monitor-wait', '--speed', String(speed), '--quiet', '--log', log],
+        ['--seed', '1', '--half', String(half), '--start-playing', '--home', TEAM, '--away', TEAM, '--monitor', '--monitor-watchers', '10', '--speed', String(speed), '--quiet', '--log', log],
         { stdio: ['ignore', 'pipe', 'pipe'] }
     );
     let stderr = '';

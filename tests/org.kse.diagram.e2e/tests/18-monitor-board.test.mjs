@@ -33,10 +33,11 @@ async function open(query) {
 test('a running match is picked, and two of its robots are watched side by side to its end', { skip, timeout: 240000 }, async () => {
     const folder = mkdtempSync(path.join(os.tmpdir(), 'kse-e2e-board-'));
     const log = path.join(folder, 'm.jsonl');
-    // waits for the first watcher: the picker and the board are looked at before it starts
+    // waits for both watchers (the board's two frames): the picker and the board are looked at
+    // before it starts, and each frame sees its robot from the kick-off
     const match = spawn(
         kseMatch,
-        ['--seed', '3', '--half', '15', '--start-playing', '--home', 'Goalie:1,Defender:2', '--away', 'Goalie:1', '--monitor', '--monitor-wait', '--speed', '10', '--quiet', '--log', log],
+        ['--seed', '3', '--half', '15', '--start-playing', '--home', 'Goalie:1,Defender:2', '--away', 'Goalie:1', '--monitor', '--monitor-watchers', '2', '--speed', '10', '--quiet', '--log', log],
         { stdio: ['ignore', 'pipe', 'pipe'] }
     );
     let stderr = '';
@@ -135,9 +136,9 @@ test('a running match is picked, and two of its robots are watched side by side 
         for (const [i, tile] of ended.entries()) {
             assert.equal(tile.state, 'ended', `${tile.robot} followed the match to its end`);
             const robotFrames = frames.map(frame => ({ t: frame.t, ...frame.robots.find(robot => robot.id === tile.robot) }));
-            // the first frame to subscribe started the match (--monitor-wait) and sees all of it; the
-            // other joins a moment later and sees the transitions from its first configuration on: at
-            // least those of the log's frames after it, at most those of the frames from its 0.1 s on
+            // the match started once both frames had subscribed (--monitor-watchers 2), so each sees
+            // every transition from its first configuration on: at least those of the log's frames
+            // after it, at most those of the frames from its 0.1 s on, and here all of them
             const logged = from => robotFrames.filter(frame => frame.t >= from).reduce((sum, robot) => sum + robot.taken.length, 0);
             assert.ok(logged(0) > 0, `${tile.robot} took transitions`);
             assert.ok(tile.since >= 0, `${tile.robot} got its configuration: ${tile.since}`);
@@ -152,7 +153,7 @@ test('a running match is picked, and two of its robots are watched side by side 
             const expected = robotFrames[robotFrames.length - 1].active.map(name => idByName.get(name)).sort();
             assert.deepEqual(tile.active, expected, `${tile.robot}'s diagram shows the states the log names active at the end`);
         }
-        assert.ok(exact >= 1, 'the robot whose subscription started the match received exactly what the log lists');
+        assert.equal(exact, ended.length, 'the match waited for both frames: each received exactly what the log lists for its robot');
         assert.notDeepEqual(ended[0].active, [], 'home-1 has active states drawn');
         assert.deepEqual(board.problems, [], 'no script errors');
 

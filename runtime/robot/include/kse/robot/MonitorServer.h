@@ -83,6 +83,8 @@ public:
 	bool Wants(std::size_t robot) const noexcept;
 	/** Whether any client has sent a subscribe (for a program that waits for its first watcher). */
 	bool AnySubscribed() const noexcept;
+	/** How many clients connected now have sent a subscribe (for a program that waits for N watchers). */
+	std::size_t Subscribers() const;
 	/** One line (without '\n') for the clients subscribed to {@code robot}. */
 	void Send(std::size_t robot, std::string_view line);
 	/** One line for every client past its hello. */

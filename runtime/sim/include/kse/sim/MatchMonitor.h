@@ -30,10 +30,11 @@ public:
 	robot::MonitorServer& Server() { return server_; }
 
 	/**
-	 * Serves clients until one has subscribed or {@code limit} has passed (before the match
-	 * starts: the only time the match waits for a watcher). True when one subscribed.
+	 * Serves clients until {@code count} of those connected have subscribed or {@code limit} has
+	 * passed (before the match starts: the only time the match waits for watchers). True when
+	 * they did.
 	 */
-	bool WaitForSubscriber(std::chrono::milliseconds limit);
+	bool WaitForSubscribers(std::size_t count, std::chrono::milliseconds limit);
 
 	/** A match that cannot end (the supervisor's hang or signal): the "aborted" record, then the end. Any thread. */
 	void Aborted(const std::string& reason, const std::string& robot, const std::string& detail);
