@@ -176,7 +176,8 @@ std::string EngineCore::DescribeLoop(const std::vector<const TransitionSegmentBa
   // A loop that repeats within the record shows twice in a row at its end.
   const std::size_t n = fired.size();
   for (std::size_t period = 1; period <= n / 2; ++period) {
-    if (!std::equal(fired.end() - period, fired.end(), fired.end() - 2 * period)) continue;
+    const auto span = static_cast<std::ptrdiff_t>(period);
+    if (!std::equal(fired.end() - span, fired.end(), fired.end() - 2 * span)) continue;
     std::string text;
     for (std::size_t i = n - period; i < n; ++i) {
       text += Labelled(fired[i]->Source()) + " -> ";

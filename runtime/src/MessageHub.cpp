@@ -145,6 +145,17 @@ void MessageHub::RemoveListener(ListenerId id) {
   has_listeners_.store(!listeners_.empty(), std::memory_order_release);
 }
 
+std::vector<MessageHub::KeptState> MessageHub::KeptStates() const {
+  std::vector<KeptState> kept;
+  std::lock_guard<SpinLock> lock(mutex_);
+  for (const auto& topic : topics_) {
+    for (const auto& retained : topic->retained) {
+      kept.push_back(KeptState{topic->name, retained.type_name, retained.message, retained.time});
+    }
+  }
+  return kept;
+}
+
 std::size_t MessageHub::SubscriberCount(const std::string& topic) const {
   std::lock_guard<SpinLock> lock(mutex_);
   const Topic* entry = FindTopic(topic);

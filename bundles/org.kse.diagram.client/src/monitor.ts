@@ -90,6 +90,19 @@ export interface MonitorHandle {
     paused(): boolean;
     pause(): void;
     resume(): void;
+    /** Asks the match for the robot's blackboard; the answer shows in the panel and in blackboard(). */
+    askBlackboard(): void;
+    /** The last blackboard answer ([] for a refusal), undefined before one. */
+    blackboard(): BlackboardEntry[] | undefined;
+}
+
+export interface BlackboardEntry {
+    topic: string;
+    type: string;
+    /** Seconds since it was published. */
+    age: number;
+    /** Its fields in protobuf's one-line text format. */
+    text: string;
 }
 
 interface Listed {
@@ -132,6 +145,8 @@ function createPanel(robot: string): {
     warning: HTMLElement;
     list: HTMLOListElement;
     count: HTMLElement;
+    ask: HTMLButtonElement;
+    blackboard: HTMLElement;
 } {
     const panel = element('aside', 'kse-monitor');
     panel.id = 'kse-monitor';
@@ -146,6 +161,11 @@ function createPanel(robot: string): {
     pause.dataset.action = 'monitor-pause';
     pause.title = 'Freeze the drawing (the monitor keeps listening); Resume jumps to the live configuration';
     title.append(pause);
+    const ask = element('button', 'kse-monitor-ask', 'Blackboard');
+    ask.type = 'button';
+    ask.dataset.action = 'monitor-blackboard';
+    ask.title = "Show the State messages the robot's blackboard holds now (topic, type, age, fields)";
+    title.append(ask);
     head.append(title);
     const facts = element('div', 'kse-monitor-facts');
     const clock = element('span', 'kse-monitor-clock', 't = –');
@@ -161,8 +181,10 @@ function createPanel(robot: string): {
     caption.append(count);
     const list = element('ol', 'kse-monitor-list');
     list.reversed = true;
-    panel.append(head, warning, caption, list);
-    return { panel, state, clock, game, score, pause, warning, list, count };
+    const blackboard = element('section', 'kse-monitor-blackboard');
+    blackboard.hidden = true;
+    panel.append(head, warning, blackboard, caption, list);
+    return { panel, state, clock, game, score, pause, warning, list, count, ask, blackboard };
 }
 
 /** Watches the robot once the diagram is shown. */
@@ -339,6 +361,11 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
                     header.score = record.score.join(' : ');
                 }
                 break;
+            case 'blackboard':
+                if (record.robot === parameters.robot) {
+                    showBlackboard(record);
+                }
+                break;
             case 'aborted':
                 result = 'aborted';
                 warn(`The match was aborted: ${String(record.reason ?? '')}${record.detail ? ` (${String(record.detail)})` : ''}`);
@@ -389,6 +416,50 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
         }
         listChanged = true;
     }
+
+    // the robot's State messages as the match answered: a table under the panel's head
+    let blackboard: BlackboardEntry[] | undefined;
+    function showBlackboard(record: Record<string, unknown>): void {
+        const heading = element('div', 'kse-monitor-caption', typeof record.t === 'number' ? `Blackboard at t = ${record.t.toFixed(2)} s` : 'Blackboard');
+        const close = element('button', 'kse-monitor-close', '×');
+        close.type = 'button';
+        close.title = 'Hide the blackboard';
+        close.addEventListener('click', () => (ui.blackboard.hidden = true));
+        heading.append(close);
+        if (typeof record.error === 'string') {
+            blackboard = [];
+            ui.blackboard.replaceChildren(heading, element('p', 'kse-monitor-none', `No blackboard: ${record.error}.`));
+            ui.blackboard.hidden = false;
+            return;
+        }
+        const states = Array.isArray(record.states) ? (record.states as Array<Record<string, unknown>>) : [];
+        blackboard = states.map(entry => ({
+            topic: String(entry.topic ?? ''),
+            type: String(entry.type ?? ''),
+            age: typeof entry.age === 'number' ? entry.age : NaN,
+            text: String(entry.text ?? '') + (entry.cut === true ? ' …' : '')
+        }));
+        // each message its own block: a head (topic, type, age), then its fields, which may be long
+        const rows = blackboard.map(entry => {
+            const row = element('div', 'kse-monitor-message');
+            const head = element('div', 'kse-monitor-message-head');
+            head.append(element('span', 'kse-monitor-topic', entry.topic), element('span', 'kse-monitor-type', entry.type));
+            head.append(element('span', 'kse-monitor-age', Number.isNaN(entry.age) ? '' : `${entry.age.toFixed(2)} s ago`));
+            row.append(head, element('div', 'kse-monitor-fields', entry.text));
+            return row;
+        });
+        const table = element('div', 'kse-monitor-messages');
+        table.append(...rows);
+        ui.blackboard.replaceChildren(heading, rows.length > 0 ? table : element('p', 'kse-monitor-none', 'It holds no State message yet.'));
+        ui.blackboard.hidden = false;
+    }
+
+    function askBlackboard(): void {
+        if (socket?.readyState === WebSocket.OPEN && parameters.robot) {
+            socket.send(JSON.stringify({ type: 'blackboard', robot: parameters.robot }));
+        }
+    }
+    ui.ask.addEventListener('click', askBlackboard);
 
     function pause(): void {
         paused = true;
@@ -488,6 +559,8 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
         fired: () => [...everFired],
         paused: () => paused,
         pause,
-        resume
+        resume,
+        askBlackboard,
+        blackboard: () => blackboard?.slice()
     };
 }

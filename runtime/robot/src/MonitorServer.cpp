@@ -11,9 +11,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <iostream>
 #include <stdexcept>
 #include <thread>
+
+#include <google/protobuf/text_format.h>
 
 namespace kse::robot {
 
@@ -32,7 +35,7 @@ public:
 
 	std::optional<ClientMessage> Message() {
 		ClientMessage message;
-		std::optional<std::string> type, token;
+		std::optional<std::string> type, token, robot;
 		std::optional<std::vector<std::string>> robots;
 		if (!Take('{')) return std::nullopt;
 		Space();
@@ -52,6 +55,9 @@ public:
 			} else if (*key == "robots" && !robots) {
 				robots = Strings();
 				if (!robots) return std::nullopt;
+			} else if (*key == "robot" && !robot) {
+				robot = String();
+				if (!robot) return std::nullopt;
 			} else {
 				return std::nullopt;
 			}
@@ -61,14 +67,19 @@ public:
 		}
 		Space();
 		if (at_ != text_.size()) return std::nullopt;
-		if (type == "hello" && token && !robots) {
+		if (type == "hello" && token && !robots && !robot) {
 			message.type = ClientMessage::Type::Hello;
 			message.token = std::move(*token);
 			return message;
 		}
-		if (type == "subscribe" && robots && !token) {
+		if (type == "subscribe" && robots && !token && !robot) {
 			message.type = ClientMessage::Type::Subscribe;
 			message.robots = std::move(*robots);
+			return message;
+		}
+		if (type == "blackboard" && robot && !token && !robots) {
+			message.type = ClientMessage::Type::Blackboard;
+			message.robots = {std::move(*robot)};
 			return message;
 		}
 		return std::nullopt;
@@ -217,6 +228,7 @@ std::string Base64Url(const unsigned char* data, std::size_t size) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr std::size_t kBlackboardRequestsPerSecond = 10;
 
 std::string NewToken() {
 	unsigned char bytes[32];
@@ -262,6 +274,7 @@ struct MonitorServer::Client {
 	std::size_t out_at = 0;
 	std::vector<bool> robots;        // subscribed, by robot
 	bool subscribed = false;         // has sent a subscribe
+	std::deque<Clock::time_point> asked;  // its last blackboard requests, for the rate limit
 };
 
 MonitorServer::MonitorServer(std::vector<std::string> robots, Options options)
@@ -417,9 +430,30 @@ MonitorServer::Verdict MonitorServer::Handle(Client& client, std::string_view li
 		if (!welcome_.empty()) Queue(client, welcome_);
 		return Verdict::Keep;
 	}
-	if (message->type != monitor_detail::ClientMessage::Type::Subscribe) {
+	if (message->type == monitor_detail::ClientMessage::Type::Hello) {
 		Drop(client, "a second hello", &Stats::refused);
 		return Verdict::Close;
+	}
+	if (message->type == monitor_detail::ClientMessage::Type::Blackboard) {
+		// answering costs the program's loop its time: a page asks when its user clicks
+		const auto now = Clock::now();
+		while (!client.asked.empty() && now - client.asked.front() > std::chrono::seconds(1)) client.asked.pop_front();
+		if (client.asked.size() >= kBlackboardRequestsPerSecond) {
+			Drop(client, "more than 10 blackboard requests in a second", &Stats::refused);
+			return Verdict::Close;
+		}
+		client.asked.push_back(now);
+		const auto& wanted = message->robots.front();
+		const auto found = std::find(robots_.begin(), robots_.end(), wanted);
+		if (found == robots_.end() || !on_blackboard_) {
+			std::string answer = "{\"type\":\"blackboard\",\"robot\":";
+			AppendJsonString(answer, wanted);
+			answer += found == robots_.end() ? ",\"error\":\"no such robot\"}" : ",\"error\":\"this program shows no blackboards\"}";
+			Queue(client, answer);
+		} else {
+			on_blackboard_(client.id, static_cast<std::size_t>(found - robots_.begin()));
+		}
+		return Verdict::Keep;
 	}
 	// the new set replaces the old; robots it does not know are left out (a page may name one
 	// of another match), "*" is every robot
@@ -495,6 +529,11 @@ void MonitorServer::Reap() {
 bool MonitorServer::Wants(std::size_t robot) const noexcept {
 	std::lock_guard lock(mutex_);
 	return robot < watchers_.size() && watchers_[robot] > 0;
+}
+
+void MonitorServer::OnBlackboard(std::function<void(std::size_t client, std::size_t robot)> handler) {
+	std::lock_guard lock(mutex_);
+	on_blackboard_ = std::move(handler);
 }
 
 bool MonitorServer::AnySubscribed() const noexcept {
@@ -670,6 +709,37 @@ std::string ActiveRecord(double t, std::string_view robot, const ChartIndex& ind
 	index.AppendActive(out, chart);
 	out += '}';
 	return out;
+}
+
+std::string BlackboardRecord(double t, std::string_view robot, const messaging::MessageHub& hub) {
+	constexpr std::size_t kLongestText = 2048;
+	std::string out = "{\"type\":\"blackboard\",\"t\":";
+	AppendNumber(out, "%.2f", t);
+	out += ",\"robot\":";
+	AppendJsonString(out, robot);
+	out += ",\"states\":[";
+	const auto now = hub.GetClock().Now();
+	google::protobuf::TextFormat::Printer printer;
+	printer.SetSingleLineMode(true);
+	bool first = true;
+	for (const auto& kept : hub.KeptStates()) {
+		std::string text;
+		printer.PrintToString(*kept.message, &text);
+		while (!text.empty() && text.back() == ' ') text.pop_back();
+		const bool cut = text.size() > kLongestText;
+		if (cut) text.resize(kLongestText);
+		out += first ? "{\"topic\":" : ",{\"topic\":";
+		first = false;
+		AppendJsonString(out, kept.topic);
+		out += ",\"type\":";
+		AppendJsonString(out, kept.type_name);
+		out += ",\"age\":";
+		AppendNumber(out, "%.3f", std::chrono::duration<double>(now - kept.time).count());
+		out += ",\"text\":";
+		AppendJsonString(out, text);
+		out += cut ? ",\"cut\":true}" : "}";
+	}
+	return out + "]}";
 }
 
 }  // namespace kse::robot

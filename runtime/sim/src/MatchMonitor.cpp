@@ -39,6 +39,16 @@ MatchMonitor::MatchMonitor(const Match& match, robot::MonitorServer::Options opt
 	welcome += "]}";
 	server_.SetWelcome(std::move(welcome));
 	server_.OnSubscribed([this](std::size_t client, std::size_t robot) { server_.SendTo(client, Active(robot, match_.Time())); });
+	server_.OnBlackboard([this](std::size_t client, std::size_t robot) {
+		const robot::Robot* process = match_.GetRobot(robot);
+		if (process == nullptr) {
+			std::string answer = "{\"type\":\"blackboard\",\"robot\":";
+			robot::AppendJsonString(answer, match_.RobotId(robot));
+			server_.SendTo(client, answer + ",\"error\":\"this robot runs no statechart\"}");
+			return;
+		}
+		server_.SendTo(client, robot::BlackboardRecord(match_.Time(), match_.RobotId(robot), process->Hub()));
+	});
 }
 
 std::string MatchMonitor::Active(std::size_t robot, double time) const {

@@ -241,6 +241,46 @@ TEST(Monitor, AMessageBeforeHelloASecondHelloAndUnknownTypesClose) {
 	EXPECT_EQ(early.Bytes(), 0u);
 }
 
+TEST(Monitor, ABlackboardRequestIsAnsweredWithTheStateMessagesTheRobotHolds) {
+	Watched watched(Patrollers(1));
+	auto& server = watched.monitor.Server();
+	TestClient client(server.Port());
+	client.Hello(server.Token());
+	client.Subscribe("\"home-1\"");
+	client.Send("{\"type\":\"blackboard\",\"robot\":\"nobody\"}\n");
+	bool asked = false;
+	watched.Run({&client}, [&](const Match& match) {
+		if (!asked && match.Time() >= 5) {
+			client.Send("{\"type\":\"blackboard\",\"robot\":\"home-1\"}\n");
+			asked = true;
+		}
+	});
+	const auto answers = OfType(client.Lines(), "blackboard");
+	ASSERT_EQ(answers.size(), 2u) << client.Lines().size();
+	EXPECT_EQ(answers[0], "{\"type\":\"blackboard\",\"robot\":\"nobody\",\"error\":\"no such robot\"}");
+	// mid-match, the game controller's state reached the robot: PLAYING, as the log says
+	EXPECT_EQ(answers[1].rfind("{\"type\":\"blackboard\",\"t\":5.", 0), 0u) << answers[1];
+	EXPECT_NE(answers[1].find("\"robot\":\"home-1\",\"states\":[{\"topic\":"), std::string::npos) << answers[1];
+	EXPECT_NE(answers[1].find("\"type\":\"GameStateMessage\""), std::string::npos) << answers[1];
+	EXPECT_NE(answers[1].find("player_state: 3"), std::string::npos) << answers[1];
+	EXPECT_EQ(server.GetStats().refused, 0u);
+}
+
+TEST(Monitor, MoreThanTenBlackboardRequestsInASecondCloseThatClientOnly) {
+	Watched watched(Patrollers(1));
+	auto& server = watched.monitor.Server();
+	TestClient greedy(server.Port()), calm(server.Port());
+	greedy.Hello(server.Token());
+	calm.Hello(server.Token());
+	calm.Subscribe("\"*\"");
+	std::string burst;
+	for (int i = 0; i < 11; ++i) burst += "{\"type\":\"blackboard\",\"robot\":\"home-1\"}\n";
+	greedy.Send(burst);
+	EXPECT_TRUE(greedy.WaitClosed(&server));
+	EXPECT_EQ(server.GetStats().refused, 1u);
+	EXPECT_EQ(server.Clients(), 1u);
+}
+
 TEST(Monitor, AMatchWaitsForAsManyWatchersAsItWasToldAndCountsOnlyThoseConnected) {
 	Watched watched(Patrollers(1));
 	auto& server = watched.monitor.Server();

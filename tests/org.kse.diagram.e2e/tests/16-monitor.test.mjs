@@ -69,6 +69,14 @@ test('the page highlights what the robot of a running match does, as the match l
         });
         await page.waitForFunction(() => document.body.dataset.kseMonitor === 'live' || document.body.dataset.kseMonitor === 'error', null, { timeout: 30000 });
         await page.waitForTimeout(300);
+        // on request, the State messages the robot's blackboard holds: the game controller's says PLAYING
+        await page.click('.kse-monitor-ask');
+        await page.waitForFunction(() => window.kse.monitor.blackboard() !== undefined, null, { timeout: 10000 });
+        const blackboard = await page.evaluate(() => window.kse.monitor.blackboard());
+        const game = blackboard.find(entry => entry.topic === 'worldstate' && entry.type === 'GameStateMessage');
+        assert.ok(game, `the blackboard holds the game state: ${JSON.stringify(blackboard)}`);
+        assert.match(game.text, /player_state: 3\b/, 'the robot plays (--start-playing)');
+        assert.equal(await page.locator('.kse-monitor-blackboard .kse-monitor-message').count(), blackboard.length, 'each message is a row of the panel');
         await shot(page, 'live');
         // Pause freezes the drawing while the records keep coming; Resume draws the live configuration
         const drawnNow = () =>

@@ -73,6 +73,17 @@ class MessageHub {
 
   const Clock& GetClock() const noexcept { return clock_; }
 
+  /// A State message the hub keeps: the last one of its type on its topic.
+  struct KeptState {
+    std::string topic;
+    std::string type_name;
+    std::shared_ptr<const google::protobuf::Message> message;
+    TimePoint time;  // when it was published
+  };
+  /// The State messages kept (what a blackboard subscribing now starts with), topics in the
+  /// order they were first used. For a monitor that shows them; not for a robot's loop.
+  std::vector<KeptState> KeptStates() const;
+
   /// Number of blackboards subscribed to a topic.
   std::size_t SubscriberCount(const std::string& topic) const;
   /// Number of messages published so far.

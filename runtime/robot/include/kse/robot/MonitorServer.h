@@ -20,6 +20,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <kse/messaging/MessageHub.h>
 #include <statechart_engine/Statechart.h>
 
 namespace kse::robot {
@@ -76,6 +77,12 @@ public:
 	 * robot's configuration now), so a client is right from its first line on.
 	 */
 	void OnSubscribed(std::function<void(std::size_t client, std::size_t robot)> handler);
+	/**
+	 * Called from Pump() when a client asks for a robot's blackboard: answer with SendTo() (a
+	 * "blackboard" record, BlackboardRecord()). Without a handler the client is told there is none.
+	 * More than 10 requests in a second close that client.
+	 */
+	void OnBlackboard(std::function<void(std::size_t client, std::size_t robot)> handler);
 
 	/** Accepts, reads and handles client lines, writes what is buffered. Never blocks. */
 	void Pump();
@@ -123,6 +130,7 @@ private:
 	std::string token_;
 	std::string welcome_;
 	std::function<void(std::size_t, std::size_t)> on_subscribed_;
+	std::function<void(std::size_t, std::size_t)> on_blackboard_;
 	std::vector<std::unique_ptr<Client>> clients_;
 	std::size_t next_id_ = 0;
 	std::vector<std::size_t> watchers_;  // per robot: clients subscribed to it
@@ -163,13 +171,19 @@ double WallMilliseconds();
 std::string TakenRecord(double t, double wall, std::string_view robot, long tr, const statechart_engine::TransitionSegmentBase& transition);
 /** {"type":"active","t":..,"robot":..,"active":[labels]} (no '\n'). */
 std::string ActiveRecord(double t, std::string_view robot, const ChartIndex& index, const statechart_engine::Statechart& chart);
+/**
+ * {"type":"blackboard","t":..,"robot":..,"states":[{"topic":..,"type":..,"age":s,"text":..}]}:
+ * the State messages {@code hub} holds (what a blackboard subscribing now starts with), each in
+ * protobuf's one-line text format, cut at 2 KiB (then "cut":true).
+ */
+std::string BlackboardRecord(double t, std::string_view robot, const messaging::MessageHub& hub);
 
 namespace monitor_detail {
 /** The two messages a client may send, read strictly; nullopt for anything else. */
 struct ClientMessage {
-	enum class Type { Hello, Subscribe } type = Type::Hello;
+	enum class Type { Hello, Subscribe, Blackboard } type = Type::Hello;
 	std::string token;
-	std::vector<std::string> robots;
+	std::vector<std::string> robots;  // a blackboard request's robot is the one
 };
 std::optional<ClientMessage> ParseClientMessage(std::string_view line);
 std::string Base64Url(const unsigned char* data, std::size_t size);

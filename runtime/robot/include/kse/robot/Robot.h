@@ -93,6 +93,8 @@ public:
 	const std::string& Failure() const { return failure_; }
 
 	statechart_engine::Statechart& Chart() { return statechart_->Chart(); }
+	/** The robot's hub: the monitor shows the State messages it keeps. */
+	const messaging::MessageHub& Hub() const { return hub_; }
 	const std::string& Behaviour() const { return behaviour_; }
 
 private:

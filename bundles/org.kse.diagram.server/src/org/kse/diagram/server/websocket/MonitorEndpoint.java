@@ -43,8 +43,9 @@ import jakarta.websocket.Session;
  * abuse is checked here, where the diagram endpoint's checks already live. The page needs this
  * server's token; only pages of this server's own origin may connect (unlike {@code /kse}, which
  * an embedding host's page on another local port uses); the relay reaches 127.0.0.1 only, so a
- * page cannot make it a port scanner of other hosts; a page may only change the subscription, in
- * one small message: anything else closes its connection (1008) and no other.
+ * page cannot make it a port scanner of other hosts; a page may only change the subscription or ask
+ * for a robot's blackboard, each in one small message that the relay writes anew for the match:
+ * anything else closes its connection (1008) and no other.
  * <p>
  * A page names the match by its port and key ({@code ?port=P&key=K}, as kse-match printed them) or
  * by its process id ({@code ?match=PID}), which is looked up among the {@link RunningMatches}.
@@ -321,17 +322,41 @@ public final class MonitorEndpoint extends Endpoint {
 		fromPage.setLength(0);
 		fromPageBytes = 0;
 		List<String> robots = subscribed(text);
-		if (robots == null) {
-			LOG.warn("a monitor page sent a message that is not a subscription: its connection is closed");
-			close(CloseReason.CloseCodes.VIOLATED_POLICY, "only {\"type\":\"subscribe\",\"robots\":[…]} is accepted");
+		String blackboard = robots == null ? blackboardAskedFor(text) : null;
+		if (robots == null && blackboard == null) {
+			LOG.warn("a monitor page sent a message that is neither a subscription nor a blackboard request: its connection is closed");
+			close(CloseReason.CloseCodes.VIOLATED_POLICY,
+					"only {\"type\":\"subscribe\",\"robots\":[…]} and {\"type\":\"blackboard\",\"robot\":…} are accepted");
 			return;
 		}
 		try {
-			writeToMatch(subscription(robots));
+			// written anew by the relay, never passed on as the page wrote it
+			writeToMatch(robots != null ? subscription(robots) : blackboardRequest(blackboard));
 		} catch (IOException | RuntimeException notYet) {
 			// not connected yet, or the match has gone: its end reaches the page through the relay
-			LOG.debug("a subscription was not forwarded: " + notYet.getMessage());
+			LOG.debug("a page's message was not forwarded: " + notYet.getMessage());
 		}
+	}
+
+	/** The robot of a well-formed blackboard request ({"type":"blackboard","robot":id}), or null. */
+	private static String blackboardAskedFor(String text) {
+		try {
+			if (JsonParser.parseString(text) instanceof JsonObject message && message.size() == 2
+					&& new JsonPrimitive("blackboard").equals(message.get("type")) && message.get("robot") instanceof JsonPrimitive robot
+					&& robot.isString() && !robot.getAsString().equals("*") && ROBOT.matcher(robot.getAsString()).matches()) {
+				return robot.getAsString();
+			}
+			return null;
+		} catch (RuntimeException malformed) {
+			return null;
+		}
+	}
+
+	private static String blackboardRequest(String robot) {
+		JsonObject request = new JsonObject();
+		request.addProperty("type", "blackboard");
+		request.addProperty("robot", robot);
+		return request.toString();
 	}
 
 	/** The robots of a well-formed subscription, or null. */

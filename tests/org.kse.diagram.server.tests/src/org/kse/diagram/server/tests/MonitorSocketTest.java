@@ -144,6 +144,8 @@ class MonitorSocketTest {
 			assertEquals("{\"type\":\"subscribe\",\"robots\":[\"*\"]}", peer.readLine(), "no robots named: every robot");
 			socket.sendText("{\"type\":\"subscribe\",\"robots\":[\"away-2\"]}", true).get(5, TimeUnit.SECONDS);
 			assertEquals("{\"type\":\"subscribe\",\"robots\":[\"away-2\"]}", peer.readLine(), "the page's new subscription reaches the match");
+			socket.sendText("{ \"robot\" : \"away-2\", \"type\" : \"blackboard\" }", true).get(5, TimeUnit.SECONDS);
+			assertEquals("{\"type\":\"blackboard\",\"robot\":\"away-2\"}", peer.readLine(), "a blackboard request reaches the match, written anew");
 			peer.send("{\"type\":\"frame\",\"t\":0.1}");
 			assertEquals("{\"type\":\"frame\",\"t\":0.1}", page.next());
 		}
@@ -209,8 +211,10 @@ class MonitorSocketTest {
 	}
 
 	@Test
-	void anythingButASubscriptionClosesThePage() throws Exception {
+	void anythingButASubscriptionOrABlackboardRequestClosesThePage() throws Exception {
 		List<String> messages = List.of("{\"type\":\"hello\",\"token\":\"x\"}", "not json", "[1,2]", "{\"type\":\"subscribe\",\"robots\":\"home-1\"}",
+				"{\"type\":\"blackboard\",\"robot\":\"*\"}", "{\"type\":\"blackboard\",\"robot\":[\"home-1\"]}",
+				"{\"type\":\"blackboard\",\"robot\":\"home-1\",\"token\":\"x\"}", "{\"type\":\"blackboard\",\"robot\":\"a\\\"b\"}",
 				"{\"type\":\"subscribe\",\"robots\":[1]}", "{\"type\":\"subscribe\",\"robots\":[\"home-1\"],\"extra\":1}",
 				"{\"type\":\"subscribe\",\"robots\":[\"a\\nb\"]}", "{\"type\":\"subscribe\",\"robots\":[\"" + "x".repeat(1 << 20) + "\"]}");
 		for (String message : messages) {
