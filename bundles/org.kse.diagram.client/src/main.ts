@@ -20,6 +20,7 @@ import { DIAGRAM_TYPE } from './model';
 import { installMonitor, readMonitorParameters } from './monitor';
 import { installMonitorHub, readHubParameters } from './monitor-hub';
 import { installReplay, isReplayedDiagram, readReplayParameters } from './replay';
+import { installSimulation, isSimulation } from './simulation';
 import { newClientId, readPageParameters } from './page';
 import { followEditorState } from './page-state';
 import { startPage } from './startup';
@@ -46,6 +47,8 @@ function showDiagram(): void {
     const monitor = readMonitorParameters(window.location);
     // a robot's statechart shown by a replay (replay.ts): only looked at as well
     const replayed = isReplayedDiagram(window.location);
+    // run by the workbench's Simulation view, which draws its configurations (simulation.ts): only looked at too
+    const simulated = isSimulation(window.location);
     if (replayed) {
         document.body.classList.add('kse-replayed');
     }
@@ -61,7 +64,7 @@ function showDiagram(): void {
             diagramType: DIAGRAM_TYPE,
             sourceUri: parameters.model,
             glspClientProvider: () => connection.client,
-            editMode: monitor || replayed ? 'readonly' : 'editable'
+            editMode: monitor || replayed || simulated ? 'readonly' : 'editable'
         },
         { popupOpenDelay: 500, popupCloseDelay: 300 }
     );
@@ -73,6 +76,9 @@ function showDiagram(): void {
     installTestApi(page, startup.ready, toolbar);
     if (monitor) {
         window.kse.monitor = installMonitor(page, startup.ready, monitor);
+    }
+    if (simulated) {
+        window.kseSimulation = installSimulation(page, startup.ready);
     }
 
     connection.connect(page, startup.isShown);

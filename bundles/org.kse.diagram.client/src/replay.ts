@@ -4,7 +4,9 @@
  * oriented markers in their team's colour, the ball, each robot's path so far), a timeline with the
  * match's events to jump to, play/pause, speed, frame steps and scrubbing. Selecting a robot shows
  * its statechart (the model named after its behaviour, `<behaviour>.stct` in the served folder) with
- * the states active at t outlined and the transitions taken around t listed.
+ * the states active at t outlined and the transitions taken around t listed. A host that serves
+ * no folder of models (the workbench: its server opens only models it lends) names each
+ * behaviour's model itself: `&models=Goalie:editor-KEY/Goalie.stct,Attacker:…` (see readModels).
  *
  * The statechart is a diagram page of its own in a frame (`?model=…&replayed=1`, read-only): the
  * page stays the one GLSP page there is, and this one only sends it CSS feedback through its
@@ -26,6 +28,27 @@ export interface ReplayParameters {
     robot: string;
     /** A time to start at, in seconds. */
     t: number;
+    /**
+     * The model of each behaviour, as the server names it, when the host said (&models=); then a
+     * behaviour it does not name has no model, and the folder is not searched.
+     */
+    models?: Map<string, string>;
+}
+
+/**
+ * `&models=Goalie:editor-KEY/Goalie.stct,Attacker:…` as behaviour → model. A behaviour is an
+ * identifier and a model's name has no comma, so the first colon and the commas split it; an
+ * entry without a colon names nothing.
+ */
+export function readModels(value: string): Map<string, string> {
+    const models = new Map<string, string>();
+    for (const entry of value.split(',')) {
+        const colon = entry.indexOf(':');
+        if (colon > 0 && colon < entry.length - 1) {
+            models.set(entry.slice(0, colon), entry.slice(colon + 1));
+        }
+    }
+    return models;
 }
 
 /** The replay's parameters when the page was opened to replay a log, else undefined. */
@@ -36,7 +59,14 @@ export function readReplayParameters(location: Location): ReplayParameters | und
         return undefined;
     }
     const t = Number(query.get('t') ?? '0');
-    return { token: query.get('token') ?? '', log, robot: query.get('robot') ?? '', t: Number.isFinite(t) ? t : 0 };
+    const models = query.get('models');
+    return {
+        token: query.get('token') ?? '',
+        log,
+        robot: query.get('robot') ?? '',
+        t: Number.isFinite(t) ? t : 0,
+        models: models === null ? undefined : readModels(models)
+    };
 }
 
 /** Whether this page is a statechart shown inside a replay (read-only, no editing tools). */
@@ -496,17 +526,15 @@ export function installReplay(parameters: ReplayParameters): ReplayHandle {
         drawnActive = new Set();
         drawnFired = new Set();
         drawTaken();
-        const known = await modelsOfFolder();
+        const found = await modelOf(info.behaviour);
         if (selected !== robot) {
             return;
         }
-        // at the folder's top, else the first below it (kse serve examples: Goalie/Goalie.stct)
-        const found = known.includes(model) ? model : known.find(path => path.endsWith(`/${model}`));
         if (found === undefined) {
             chart.hidden = true;
             chart.removeAttribute('src');
             chartMessage.hidden = false;
-            chartMessage.textContent = `There is no ${model} in the served folder: ${robot}'s statechart cannot be shown (the log names its active states: ${log
+            chartMessage.textContent = `There is no ${model} ${parameters.models ? "in the workspace's open projects" : 'in the served folder'}: ${robot}'s statechart cannot be shown (the log names its active states: ${log
                 .activeAt(frame, log.robotIndexOf(robot))
                 .join(', ')}).`;
             return;
@@ -535,6 +563,17 @@ export function installReplay(parameters: ReplayParameters): ReplayHandle {
         frameKse = kse;
         wantHighlight();
         await settled();
+    }
+
+    /** The model of a behaviour as the server names it: the host's when it named the models, else `<behaviour>.stct` of the folder. */
+    async function modelOf(behaviour: string): Promise<string | undefined> {
+        if (parameters.models) {
+            return parameters.models.get(behaviour);
+        }
+        const model = `${behaviour}.stct`;
+        const known = await modelsOfFolder();
+        // at the folder's top, else the first below it (kse serve examples: Goalie/Goalie.stct)
+        return known.includes(model) ? model : known.find(path => path.endsWith(`/${model}`));
     }
 
     async function modelsOfFolder(): Promise<string[]> {

@@ -10,6 +10,7 @@ import { ElementJson, toJson } from './model-json';
 import { MonitorHandle } from './monitor';
 import { HubHandle } from './monitor-hub';
 import { ReplayHandle } from './replay';
+import { SimulationHandle } from './simulation';
 import { StatusEntry, statusHistory } from './status-line';
 import { Toolbar } from './toolbar';
 
@@ -53,6 +54,8 @@ export interface KseHandle {
 declare global {
     interface Window {
         kse: KseHandle;
+        /** The Simulation view's handle, when the page was opened by it (&simulation=1). */
+        kseSimulation?: SimulationHandle;
     }
 }
 

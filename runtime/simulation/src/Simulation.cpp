@@ -74,11 +74,17 @@ class Director {
   }
 
   std::vector<std::string> Running() {
-    std::lock_guard<std::mutex> lock(mutex_);
     std::vector<std::string> names;
-    for (const auto& entry : running_) names.push_back(entry.second);
-    std::sort(names.begin(), names.end());
+    for (const auto& run : Runs()) names.push_back(run.second);
     return names;
+  }
+
+  // The runs going on: id and activity name, by name (then by when they began).
+  std::vector<std::pair<std::uint64_t, std::string>> Runs() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::pair<std::uint64_t, std::string>> runs(running_.begin(), running_.end());
+    std::stable_sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    return runs;
   }
 
   // Activities start on the engine's workers: waits until `count` runs have begun.
@@ -154,10 +160,18 @@ void RegisterScriptedActivities(const std::vector<std::string>& names) {
   }
 }
 
+// A stand-in activity waits for the user by design: the watchdog, which reports user code that
+// runs for more than a second, would report every one of them.
+statechart_engine::Options EngineOptions() {
+  statechart_engine::Options options;
+  options.watchdog_limit = std::chrono::milliseconds(0);
+  return options;
+}
+
 struct Simulation::Engine {
   explicit Engine(const std::string& model)
       : hub(clock), reader(hub, "script"),
-        statechart(statechart_engine::StatechartFactory::Instance().Create(model, hub)) {
+        statechart(statechart_engine::StatechartFactory::Instance().Create(model, hub, EngineOptions())) {
     if (!statechart) Reject("no statechart '" + model + "' is linked into this simulator");
     index = std::make_unique<kse::robot::ChartIndex>(chart().GetDefinition());
   }
@@ -272,6 +286,13 @@ void Simulation::Settle(std::vector<std::string>& out) {
   }
   running = std::min(running, chart.GetOptions().worker_threads);
   if (!Director::Instance().AwaitStarted(running)) throw std::runtime_error("activities did not start within 10 s");
+  // a run that began in this settle began now, at this wake-up time
+  std::map<std::uint64_t, std::chrono::milliseconds> started;
+  for (const auto& run : Director::Instance().Runs()) {
+    const auto known = run_started_.find(run.first);
+    started.emplace(run.first, known == run_started_.end() ? Elapsed() : known->second);
+  }
+  run_started_ = std::move(started);
   Flush(out);
 }
 
@@ -442,6 +463,15 @@ std::string Simulation::ActiveLeaves() const {
 }
 
 std::vector<std::string> Simulation::Running() const { return Director::Instance().Running(); }
+
+std::vector<std::pair<std::string, std::chrono::milliseconds>> Simulation::RunningSince() const {
+  std::vector<std::pair<std::string, std::chrono::milliseconds>> runs;
+  for (const auto& run : Director::Instance().Runs()) {
+    const auto known = run_started_.find(run.first);
+    runs.emplace_back(run.second, known == run_started_.end() ? Elapsed() : known->second);
+  }
+  return runs;
+}
 
 std::vector<std::string> Simulation::StateLabels() const {
   std::vector<std::string> labels;

@@ -88,8 +88,14 @@ int CheckCases(const std::vector<std::filesystem::path>& files, bool eager, bool
 std::string StateOf(const Simulation& simulation) {
   std::string out = ",\"active\":";
   AppendStrings(out, simulation.ActiveStates());
+  const auto runs = simulation.RunningSince();
+  std::vector<std::string> names;
   out += ",\"running\":";
-  AppendStrings(out, simulation.Running());
+  for (const auto& run : runs) names.push_back(run.first);
+  AppendStrings(out, names);
+  out += ",\"since\":[";
+  for (std::size_t i = 0; i < runs.size(); ++i) out += (i ? "," : "") + std::to_string(runs[i].second.count());
+  out += ']';
   out += ",\"time\":" + std::to_string(simulation.Elapsed().count());
   out += ",\"started\":";
   out += simulation.Started() ? "true" : "false";

@@ -23,7 +23,8 @@ using kse::simulation::ParseCommand;
 using kse::simulation::ScriptError;
 using kse::simulation::Simulation;
 
-// 0.1 START -> 0.2 Work (activity) -> 0.3 Wait (a 100 ms timer set on the way) -> 0.4 END
+// 0.1 START -> 0.2 Work (activity) -> 0.3 Wait (a 100 ms timer set on the way) -> 0.4 Work again
+// (launched by the timer, in the middle of an advance) -> 0.5 END
 class ErrandChart : public statechart_engine::IStatechart {
  public:
   ErrandChart(kse::messaging::MessageHub& hub, const statechart_engine::Options& options) : chart_("Node_errand", hub, options) {
@@ -31,14 +32,17 @@ class ErrandChart : public statechart_engine::IStatechart {
     auto* start = chart_.Add<StartState>("Node_start", &chart_);
     auto* work = chart_.Add<BasicState>("Node_work", &chart_, ActivityFactory::Instance().PartNamed("Work"));
     auto* wait = chart_.Add<BasicState>("Node_wait", &chart_);
+    auto* again = chart_.Add<BasicState>("Node_again", &chart_, ActivityFactory::Instance().PartNamed("Work"));
     auto* end = chart_.Add<EndState>("Node_end", &chart_);
     start->SetLabel("0.1");
     work->SetLabel("0.2");
     wait->SetLabel("0.3");
-    end->SetLabel("0.4");
+    again->SetLabel("0.4");
+    end->SetLabel("0.5");
     chart_.AddTransition(start, work);
     chart_.AddTransition(work, wait, nullptr, std::make_unique<TimeoutAction>("tick", 100));
-    chart_.AddTransition(wait, end, std::make_unique<TimeoutCondition>("tick"));
+    chart_.AddTransition(wait, again, std::make_unique<TimeoutCondition>("tick"));
+    chart_.AddTransition(again, end);
   }
   void Start() override { chart_.Start(); }
   void Stop() override { chart_.Stop(); }
@@ -71,18 +75,26 @@ TEST_F(SimulationTest, ARunGoesAsTheCommandsSay) {
   EXPECT_EQ(Run(simulation, "active"), Lines({"active: 0.3"}));
   EXPECT_EQ(Run(simulation, "advance 60"), Lines({"0.3 -> 0.4"}));
   EXPECT_EQ(simulation.Elapsed().count(), 110);
+  // the timer launched Work again at 100 ms, within the advance: that is when it began
+  ASSERT_EQ(simulation.RunningSince().size(), 1u);
+  EXPECT_EQ(simulation.RunningSince()[0].first, "Work");
+  EXPECT_EQ(simulation.RunningSince()[0].second.count(), 100);
+  EXPECT_EQ(Run(simulation, "finish Work"), Lines({"0.4 -> 0.5"}));
   EXPECT_EQ(Run(simulation, "running"), Lines({"running: none"}));
 }
 
 TEST_F(SimulationTest, AnAdvanceStopsAtTheWakeUpThatHitABreakpoint) {
-  Simulation simulation("Errand");
-  simulation.SetBreakpoints({"0.4"}, {});
-  Run(simulation, "start");
-  Run(simulation, "finish Work");
-  EXPECT_EQ(Run(simulation, "advance 5000"), Lines({"0.3 -> 0.4"}));
-  EXPECT_EQ(simulation.StoppedAt(), "state 0.4");
-  EXPECT_EQ(simulation.Executed(), "advance 100");  // what the trace records: it replays the same
-  EXPECT_EQ(simulation.Elapsed().count(), 100);
+  {
+    // a program runs one simulation at a time: its activities are the stand-ins' only runs
+    Simulation simulation("Errand");
+    simulation.SetBreakpoints({"0.4"}, {});
+    Run(simulation, "start");
+    Run(simulation, "finish Work");
+    EXPECT_EQ(Run(simulation, "advance 5000"), Lines({"0.3 -> 0.4"}));  // and it stops there, with Work running
+    EXPECT_EQ(simulation.StoppedAt(), "state 0.4");
+    EXPECT_EQ(simulation.Executed(), "advance 100");  // what the trace records: it replays the same
+    EXPECT_EQ(simulation.Elapsed().count(), 100);
+  }
 
   Simulation again("Errand");
   again.SetBreakpoints({}, {1});
@@ -145,10 +157,10 @@ TEST_F(SimulationTest, ASessionAnswersEachCommandWithOneLine) {
   std::istringstream reply(out.str());
   for (std::string line; std::getline(reply, line);) lines.push_back(line);
   ASSERT_EQ(lines.size(), 7u) << out.str();
-  EXPECT_EQ(lines[0], R"({"type":"ready","model":"Errand","states":["Node_errand","0.1","0.2","0.3","0.4"],"transitions":3,"activities":[]})");
-  EXPECT_EQ(lines[2], R"({"type":"result","ok":true,"command":"start","lines":["0.1 -> 0.2"],"taken":[{"tr":0,"from":"0.1","to":"0.2"}],"active":["Node_errand","0.2"],"running":["Work"],"time":0,"started":true})");
-  EXPECT_EQ(lines[3], R"({"type":"result","ok":false,"command":"finish Nobody","error":"'Nobody' is not running","active":["Node_errand","0.2"],"running":["Work"],"time":0,"started":true})");
-  EXPECT_EQ(lines[5], R"({"type":"result","ok":true,"command":"advance 100","lines":["0.3 -> 0.4"],"taken":[{"tr":2,"from":"0.3","to":"0.4"}],"stopped":"state 0.4","active":["Node_errand","0.4"],"running":[],"time":100,"started":true})");
+  EXPECT_EQ(lines[0], R"({"type":"ready","model":"Errand","states":["Node_errand","0.1","0.2","0.3","0.4","0.5"],"transitions":4,"activities":[]})");
+  EXPECT_EQ(lines[2], R"({"type":"result","ok":true,"command":"start","lines":["0.1 -> 0.2"],"taken":[{"tr":0,"from":"0.1","to":"0.2"}],"active":["Node_errand","0.2"],"running":["Work"],"since":[0],"time":0,"started":true})");
+  EXPECT_EQ(lines[3], R"({"type":"result","ok":false,"command":"finish Nobody","error":"'Nobody' is not running","active":["Node_errand","0.2"],"running":["Work"],"since":[0],"time":0,"started":true})");
+  EXPECT_EQ(lines[5], R"({"type":"result","ok":true,"command":"advance 100","lines":["0.3 -> 0.4"],"taken":[{"tr":2,"from":"0.3","to":"0.4"}],"stopped":"state 0.4","active":["Node_errand","0.4"],"running":["Work"],"since":[100],"time":100,"started":true})");
   EXPECT_NE(lines[6].find("longer than 64 KiB"), std::string::npos);
 }
 

@@ -7,9 +7,12 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kse/simulation/Script.h"
@@ -75,6 +78,8 @@ class Simulation {
   std::string ActiveLeaves() const;
   /** Names of the activities running now, sorted (one per run). */
   std::vector<std::string> Running() const;
+  /** The same runs with the simulated time each began at (the wake-up that launched it). */
+  std::vector<std::pair<std::string, std::chrono::milliseconds>> RunningSince() const;
   /** Labels of the statechart's states, in the model's order. */
   std::vector<std::string> StateLabels() const;
   std::size_t TransitionCount() const;
@@ -100,6 +105,7 @@ class Simulation {
   std::string stopped_at_;
   std::set<std::string> break_states_;
   std::set<long> break_transitions_;
+  std::map<std::uint64_t, std::chrono::milliseconds> run_started_;  // by the Director's run id
 };
 
 }  // namespace kse::simulation

@@ -24,7 +24,7 @@ public final class RuntimePrefix {
 		if (value == null || value.isBlank()) {
 			throw new SimulationException("the simulation is built against an installed KSE runtime: name its install prefix"
 					+ " (the folder given to cmake --install; ./kse demo makes one in target/demo/runtime-prefix)"
-					+ " with --runtime DIR, the KSE preference 'Runtime install prefix', or " + VARIABLE);
+					+ " with --runtime DIR (kse simulate), Window > Preferences > KSE > Simulation (the workbench), or " + VARIABLE);
 		}
 		Path prefix = Path.of(value).toAbsolutePath().normalize();
 		if (!Files.isDirectory(prefix)) {

@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalLong;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -38,10 +39,23 @@ public final class SimulationSession implements AutoCloseable {
 	/**
 	 * What a command did: the command as it ran (an advance a breakpoint cut short says how far it
 	 * went), the trace lines it caused, the segments taken, the breakpoint that stopped it, and the
-	 * statechart afterwards. {@code ok} false: refused with {@code error}, nothing changed.
+	 * statechart afterwards: its active states, the running activities (one per run, by name) and
+	 * when each of those runs began ({@code runningSince}, simulated ms, in the same order). {@code ok}
+	 * false: refused with {@code error}, nothing changed.
 	 */
 	public record Result(boolean ok, String command, List<String> lines, List<Taken> taken, Optional<String> stopped, Optional<String> error,
-			List<String> active, List<String> running, long time, boolean started) {
+			List<String> active, List<String> running, List<Long> runningSince, long time, boolean started) {
+
+		/** When the earliest run of {@code activity} going on began (simulated ms), if one is. */
+		public OptionalLong since(String activity) {
+			OptionalLong earliest = OptionalLong.empty();
+			for (int i = 0; i < running.size() && i < runningSince.size(); i++) {
+				if (running.get(i).equals(activity) && (earliest.isEmpty() || runningSince.get(i) < earliest.getAsLong())) {
+					earliest = OptionalLong.of(runningSince.get(i));
+				}
+			}
+			return earliest;
+		}
 	}
 
 	/** The longest wait for one answer: an advance of an hour through a busy chart takes seconds. */
@@ -207,7 +221,7 @@ public final class SimulationSession implements AutoCloseable {
 	private Result refused(String command, String why) {
 		Result now = last;
 		return new Result(false, command, List.of(), List.of(), Optional.empty(), Optional.of(why), now == null ? List.of() : now.active(),
-				now == null ? List.of() : now.running(), now == null ? 0 : now.time(), now != null && now.started());
+				now == null ? List.of() : now.running(), now == null ? List.of() : now.runningSince(), now == null ? 0 : now.time(), now != null && now.started());
 	}
 
 	private static Result result(JsonObject answer) {
@@ -222,12 +236,21 @@ public final class SimulationSession implements AutoCloseable {
 				answer.has("lines") ? strings(answer.getAsJsonArray("lines")) : List.of(), List.copyOf(taken),
 				Optional.ofNullable(answer.has("stopped") ? text(answer, "stopped") : null),
 				Optional.ofNullable(answer.has("error") ? text(answer, "error") : null), strings(answer.getAsJsonArray("active")),
-				strings(answer.getAsJsonArray("running")), answer.get("time").getAsLong(), answer.get("started").getAsBoolean());
+				strings(answer.getAsJsonArray("running")), numbers(answer.getAsJsonArray("since")), answer.get("time").getAsLong(),
+				answer.get("started").getAsBoolean());
 	}
 
 	private static String text(JsonObject object, String member) {
 		JsonElement element = object.get(member);
 		return element == null || element.isJsonNull() ? "" : element.getAsString();
+	}
+
+	private static List<Long> numbers(JsonArray array) {
+		List<Long> items = new ArrayList<>();
+		if (array != null) {
+			array.forEach(element -> items.add(element.getAsLong()));
+		}
+		return List.copyOf(items);
 	}
 
 	private static List<String> strings(JsonArray array) {

@@ -26,7 +26,7 @@ import jakarta.servlet.http.HttpServletResponse;
  * are ({@code [A-Za-z0-9._/-]}, no {@code ..}, no hidden segment) and must resolve, links followed,
  * to a regular file inside the folder.
  */
-final class MatchLogServlet extends HttpServlet {
+public final class MatchLogServlet extends HttpServlet {
 
 	private static final long serialVersionUID = 1L;
 
@@ -101,6 +101,22 @@ final class MatchLogServlet extends HttpServlet {
 			return null;
 		}
 		return file;
+	}
+
+	/**
+	 * The name by which a page of the server serving {@code folder} replays {@code file}
+	 * ({@code ?replay=<name>}, sent by {@code /logs/<name>}), or null when the server would not send
+	 * it (the rules of {@link #resolve}): a host that shows the page (the workbench's replay editor)
+	 * asks here rather than repeating the rules.
+	 */
+	public static String replayName(Path folder, Path file) {
+		ServedFolder served = new ServedFolder(folder);
+		Path absolute = file.toAbsolutePath().normalize();
+		if (!absolute.startsWith(served.root())) {
+			return null;
+		}
+		String name = served.root().relativize(absolute).toString().replace(java.io.File.separatorChar, '/');
+		return resolve(served, name) == null ? null : name;
 	}
 
 	/** The .jsonl files under the folder (8 levels deep at most), as sorted relative paths with forward slashes. */

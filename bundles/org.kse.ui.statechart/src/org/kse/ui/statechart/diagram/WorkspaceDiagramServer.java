@@ -46,6 +46,8 @@ public final class WorkspaceDiagramServer {
 	/** What the pages of one model share (its layout), for as long as the model lives: a page that reconnects finds it. */
 	private static final Map<Model, Map<Class<?>, Object>> shared = java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
 	private static final Map<Path, Host> hosts = new ConcurrentHashMap<>();
+	/** Read-only copies lent by replays ({@link #lend}): a page gets one only while no editor has the file. */
+	private static final Map<Path, Host> copies = new ConcurrentHashMap<>();
 	/** The random key of each file lent, by which its page names it: a page opens only files open in an editor. */
 	private static final Map<String, Path> keys = new ConcurrentHashMap<>();
 
@@ -55,6 +57,33 @@ public final class WorkspaceDiagramServer {
 	/** Lends the model of {@code file} to the diagram sessions until {@link #unregister}. */
 	public static void register(Path file, Host host) {
 		hosts.put(key(file), host);
+		keep(file);
+	}
+
+	public static void unregister(Path file, Host host) {
+		if (hosts.remove(key(file), host)) {
+			release(file);
+		}
+	}
+
+	/**
+	 * Lends a read-only copy of the model of {@code file} (a replay's chart) until {@link #unlend}:
+	 * pages get it while no editor has the file, the editor's model while one has. The file keeps
+	 * its name ({@link #name}) as long as either lends it, so that an editor opened and closed
+	 * meanwhile does not take the replay's chart away.
+	 */
+	public static void lend(Path file, Host copy) {
+		copies.put(key(file), copy);
+		keep(file);
+	}
+
+	public static void unlend(Path file, Host copy) {
+		if (copies.remove(key(file), copy)) {
+			release(file);
+		}
+	}
+
+	private static void keep(Path file) {
 		if (!keys.containsValue(key(file))) {
 			byte[] random = new byte[16];
 			new java.security.SecureRandom().nextBytes(random);
@@ -62,14 +91,43 @@ public final class WorkspaceDiagramServer {
 		}
 	}
 
-	public static void unregister(Path file, Host host) {
-		if (hosts.remove(key(file), host)) {
+	/** Forgets the file's name once nothing lends it: a page opens only files lent. */
+	private static void release(Path file) {
+		if (!hosts.containsKey(key(file)) && !copies.containsKey(key(file))) {
 			keys.values().remove(key(file));
 		}
 	}
 
+	/** The editor's model of the file, else a replay's copy, else null. */
+	private static Host host(Path file) {
+		Host host = hosts.get(key(file));
+		return host != null ? host : copies.get(key(file));
+	}
+
 	private static Path key(Path file) {
 		return file.toAbsolutePath().normalize();
+	}
+
+	/** How a page names a lent file ({@code editor-KEY/<file name>}, see {@link #page(Path)}), or null when it is not lent. */
+	public static String name(Path file) {
+		return keys.entrySet().stream().filter(entry -> entry.getValue().equals(key(file))).map(entry -> EDITOR_PREFIX + entry.getKey() + "/" + file.getFileName())
+				.findFirst().orElse(null);
+	}
+
+	/** The folder the server serves besides the lent models (its match logs): the workspace's. */
+	public static Path folder() {
+		return Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI()).toAbsolutePath().normalize();
+	}
+
+	/**
+	 * The page with the parameters {@code query} (each value encoded here) after the token, e.g. a
+	 * replay's {@code replay=<log>}, starting the server when needed.
+	 */
+	public static synchronized URI page(Map<String, String> query) throws Exception {
+		DiagramSocketServer started = server();
+		StringBuilder url = new StringBuilder("http://127.0.0.1:").append(started.port()).append("/?token=").append(started.token());
+		query.forEach((name, value) -> url.append('&').append(name).append('=').append(java.net.URLEncoder.encode(value, java.nio.charset.StandardCharsets.UTF_8)));
+		return URI.create(url.toString());
 	}
 
 	/**
@@ -77,12 +135,22 @@ public final class WorkspaceDiagramServer {
 	 * workspace folder), starting the server when needed.
 	 */
 	public static synchronized URI page(Path file) throws Exception {
+		DiagramSocketServer started = server();
+		String name = name(file);
+		if (name == null) {
+			throw new IllegalStateException(file.getFileName() + " is not open in a statechart editor");
+		}
+		return started.page(name);
+	}
+
+	/** The server, started when needed. */
+	private static synchronized DiagramSocketServer server() throws Exception {
 		if (server == null) {
 			URL pages = DiagramPages.builtIn();
 			if (pages == null) {
 				throw new IllegalStateException("the diagram client (bundle " + DiagramPages.CLIENT_BUNDLE + ") is not installed");
 			}
-			Path workspace = Path.of(ResourcesPlugin.getWorkspace().getRoot().getLocationURI());
+			Path workspace = folder();
 			EditorSources sources = new EditorSources(Display.getCurrent());
 			if (lastPort == 0) {
 				Runtime.getRuntime().addShutdownHook(new Thread(WorkspaceDiagramServer::stop, "kse-diagram-server-stop"));
@@ -94,9 +162,7 @@ public final class WorkspaceDiagramServer {
 			}
 			lastPort = server.port();
 		}
-		String keyOfFile = keys.entrySet().stream().filter(entry -> entry.getValue().equals(key(file))).map(Map.Entry::getKey).findFirst()
-				.orElseThrow(() -> new IllegalStateException(file.getFileName() + " is not open in a statechart editor"));
-		return server.page(EDITOR_PREFIX + keyOfFile + "/" + file.getFileName());
+		return server;
 	}
 
 	/**
@@ -135,7 +201,7 @@ public final class WorkspaceDiagramServer {
 
 		@Override
 		public Source open(Path file) throws java.io.IOException {
-			Host host = hosts.get(key(file));
+			Host host = host(file);
 			if (host == null) {
 				throw new java.io.IOException("its editor was closed");
 			}

@@ -6,10 +6,6 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 
 import org.eclipse.core.resources.IFile;
-import org.eclipse.core.resources.IProject;
-import org.eclipse.core.resources.IResource;
-import org.eclipse.core.resources.ResourcesPlugin;
-import org.eclipse.core.runtime.CoreException;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.SWTError;
 import org.eclipse.swt.browser.Browser;
@@ -24,6 +20,7 @@ import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.ide.IDE;
 import org.eclipse.ui.part.ViewPart;
 import org.kse.diagram.server.websocket.RunningMatches;
+import org.kse.ui.statechart.BehaviourModels;
 import org.kse.ui.statechart.diagram.WorkspaceDiagramServer;
 import org.kse.ui.statechart.editor.StatechartEditor;
 
@@ -91,7 +88,7 @@ public final class MonitorView extends ViewPart {
 	}
 
 	private static Tile tile(IWorkbenchPage page, Composite cell, RunningMatches.Match match, RunningMatches.Robot robot) {
-		IFile model = model(robot.behaviour());
+		IFile model = BehaviourModels.find(robot.behaviour());
 		if (model == null) {
 			return message(cell, robot, robot.id() + " runs " + robot.behaviour() + ", and no open project of the workspace has a " + robot.behaviour()
 					+ ".stct to draw it with: import the project whose statecharts built this kse-match.");
@@ -116,30 +113,6 @@ public final class MonitorView extends ViewPart {
 		Label label = new Label(cell, SWT.WRAP);
 		label.setText(text);
 		return new Tile(robot.id(), null, text);
-	}
-
-	/** {@code <behaviour>.stct} in an open project of the workspace: the first by path, or null. */
-	static IFile model(String behaviour) {
-		List<IFile> found = new ArrayList<>();
-		String name = behaviour + ".stct";
-		for (IProject project : ResourcesPlugin.getWorkspace().getRoot().getProjects()) {
-			if (!project.isOpen()) {
-				continue;
-			}
-			try {
-				project.accept(resource -> {
-					if (resource.getType() == IResource.FILE && resource.getName().equals(name)) {
-						found.add((IFile) resource);
-					}
-					// derived folders (build output) hold copies, not the project's models
-					return !resource.isDerived();
-				});
-			} catch (CoreException e) {
-				// a project that cannot be read has no model to offer
-			}
-		}
-		found.sort((a, b) -> a.getFullPath().toString().compareTo(b.getFullPath().toString()));
-		return found.isEmpty() ? null : found.get(0);
 	}
 
 	/** The robots shown, in order. */

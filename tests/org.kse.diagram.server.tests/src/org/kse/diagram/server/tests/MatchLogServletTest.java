@@ -17,6 +17,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kse.diagram.server.websocket.DiagramSocketServer;
+import org.kse.diagram.server.websocket.MatchLogServlet;
 
 /**
  * The match logs a page replays (GET /logs, /logs/<name>): only with the session token, only
@@ -109,6 +110,21 @@ class MatchLogServletTest {
 			assertFalse(answer[0].contains(" 200"), target + " was answered: " + answer[0]);
 			assertFalse(answer[1].contains("secret"), target + " sent a file outside the folder");
 			assertFalse(answer[1].contains("not a log"), target + " sent a file that is not a log");
+		}
+	}
+
+	/** What a host (the workbench's replay editor) asks before it opens a page: the name the server sends a file by, or none. */
+	@Test
+	void aHostLearnsTheNameOfALogTheServerSendsAndOfNoOther() throws Exception {
+		assertEquals("runs/2026/seed-3.jsonl", MatchLogServlet.replayName(folder, folder.resolve("runs/2026/seed-3.jsonl")));
+		assertEquals("m.jsonl", MatchLogServlet.replayName(folder, folder.resolve("runs/../m.jsonl")));
+		String[] answer = get("GET", "/logs/" + MatchLogServlet.replayName(folder, folder.resolve("runs/2026/seed-3.jsonl")) + token());
+		assertTrue(answer[0].contains(" 200"), answer[0]);
+		Files.createDirectories(folder.resolve("with space"));
+		Files.writeString(folder.resolve("with space/s.jsonl"), LOG);
+		for (Path refused : new Path[] { root.resolve("outside.jsonl"), folder.resolve("link.jsonl"), folder.resolve(".hidden/h.jsonl"), folder.resolve("notes.txt"),
+				folder.resolve("missing.jsonl"), folder.resolve("with space/s.jsonl"), folder.resolve("runs") }) {
+			assertEquals(null, MatchLogServlet.replayName(folder, refused), refused + " is not sent: it has no name");
 		}
 	}
 
