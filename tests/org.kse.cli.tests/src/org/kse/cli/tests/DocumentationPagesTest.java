@@ -44,6 +44,8 @@ class DocumentationPagesTest {
 	private static final Pattern HTML_HEADING = Pattern.compile("<h([1-6])[^>]*>(.*?)</h\\1>", Pattern.DOTALL);
 	private static final Pattern HTML_PRE = Pattern.compile("<pre[^>]*>(.*?)</pre>", Pattern.DOTALL);
 	private static final Pattern HTML_ID = Pattern.compile("id=\"([^\"]+)\"");
+	private static final Pattern MD_PICTURE = Pattern.compile("!\\[[^\\]]*\\]\\(([^)\\s]+)\\)");
+	private static final Pattern HTML_PICTURE = Pattern.compile("<img[^>]*\\ssrc=\"([^\"]+)\"");
 
 	@Test
 	void everyNewcomerPageIsInDocsAndInTheHelpsTableOfContents() throws IOException {
@@ -68,6 +70,32 @@ class DocumentationPagesTest {
 			assertTrue(Files.isRegularFile(HELP.resolve(page + ".html")), () -> "toc.xml lists " + page + ".html, which does not exist");
 		}
 		assertFalse(twins().isEmpty(), "pages written both as docs/*.md and as help pages");
+	}
+
+	@Test
+	void bothFormsOfAPageShowTheSamePicturesAndEachPictureIsTheSameFileInBoth() throws IOException {
+		for (String page : twins()) {
+			List<String> inMarkdown = all(MD_PICTURE, read(DOCS.resolve(page + ".md")));
+			List<String> inHelp = all(HTML_PICTURE, read(HELP.resolve(page + ".html")));
+			assertEquals(inMarkdown, inHelp, () -> page + ": the pictures of docs/" + page + ".md and of " + page + ".html, in order");
+			for (String picture : inMarkdown) {
+				Path docs = DOCS.resolve(picture).normalize();
+				Path help = HELP.resolve(picture).normalize();
+				assertTrue(docs.startsWith(DOCS) && Files.isRegularFile(docs), () -> page + ": docs/" + picture + " exists");
+				assertTrue(help.startsWith(HELP) && Files.isRegularFile(help), () -> page + ": the help's " + picture + " exists");
+				assertTrue(java.util.Arrays.equals(Files.readAllBytes(docs), Files.readAllBytes(help)),
+						() -> page + ": docs/" + picture + " and the help's copy are the same picture");
+			}
+		}
+	}
+
+	private static List<String> all(Pattern pattern, String text) {
+		List<String> found = new ArrayList<>();
+		Matcher matcher = pattern.matcher(text);
+		while (matcher.find()) {
+			found.add(matcher.group(1));
+		}
+		return found;
 	}
 
 	@Test
