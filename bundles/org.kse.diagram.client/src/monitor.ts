@@ -397,7 +397,8 @@ export function installMonitor(page: DiagramPage, ready: Promise<void>, paramete
     function onTaken(record: Record<string, unknown>): void {
         takenCount++;
         const id = `//@transitions.${String(record.tr)}`;
-        const expression = mapping.expressionOf.get(id) ?? '';
+        // the diagram's text, else the one the robot's generated code carries (a model drawn from another version)
+        const expression = mapping.expressionOf.get(id) ?? (typeof record.expression === 'string' ? record.expression : '');
         if (mapping.transitions.has(id)) {
             firedAt.set(id, now());
         }

@@ -27,6 +27,11 @@ class TransitionSegmentBase {
   State* Source() const noexcept { return source_; }
   State* Target() const noexcept { return target_; }
   const std::string& Name() const noexcept { return name_; }
+  /// The model's expression ("[guard]/actions"), as the generator gives it; empty when none was.
+  /// For whoever shows the transition (the live monitor), never for the engine.
+  const std::string& Text() const noexcept { return text_; }
+  /// Sets the expression's text (while its definition is being built).
+  void SetText(std::string text) { text_ = std::move(text); }
   bool IsGuarded() const noexcept { return static_cast<bool>(condition_); }
   bool HasAction() const noexcept { return static_cast<bool>(action_); }
 
@@ -64,6 +69,7 @@ class TransitionSegmentBase {
   Part<ICondition> condition_;
   Part<IAction> action_;
   std::string name_;
+  std::string text_;
 };
 
 /// A transition between states of the given types (as the generator names them).

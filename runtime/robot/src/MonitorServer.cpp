@@ -696,6 +696,10 @@ std::string TakenRecord(double t, double wall, std::string_view robot, long tr, 
 	AppendJsonString(out, transition.Source()->Label());
 	out += ",\"to\":";
 	AppendJsonString(out, transition.Target()->Label());
+	if (!transition.Text().empty()) {
+		out += ",\"expression\":";
+		AppendJsonString(out, transition.Text());
+	}
 	out += '}';
 	return out;
 }

@@ -344,6 +344,9 @@ TEST(Monitor, ASubscriberGetsExactlyItsRobotsTransitionsAsTheLogListsThem) {
 		from_monitor.push_back(transitions[tr]->Name());
 		EXPECT_EQ(Field(line, "from"), transitions[tr]->Source()->Label()) << line;
 		EXPECT_EQ(Field(line, "to"), transitions[tr]->Target()->Label()) << line;
+		// the model's expression, where the chart has one (the two self-loops of 0.2.2)
+		EXPECT_EQ(line.find("\"expression\":") != std::string::npos, !transitions[tr]->Text().empty()) << line;
+		if (!transitions[tr]->Text().empty()) EXPECT_EQ(Field(line, "expression"), transitions[tr]->Text()) << line;
 		++by_index[Field(line, "tr")];
 		EXPECT_GT(std::stod(Field(line, "wall")), 1.7e12) << line;  // milliseconds since 1970, now
 	}

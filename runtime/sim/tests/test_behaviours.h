@@ -224,8 +224,11 @@ public:
 		chase->SetLabel("0.2.2");
 		chart_.AddTransition(start, patrol, nullptr, std::make_unique<TimeoutAction>("tock", 250));
 		chart_.AddTransition(patrol_start, chase, nullptr, std::make_unique<TimeoutAction>("tick", 100));
-		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tick"), std::make_unique<TimeoutAction>("tick", 100));
-		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tock"), std::make_unique<TimeoutAction>("tock", 250));
+		// the expressions a model would have written, as generated code gives them to the monitor
+		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tick"), std::make_unique<TimeoutAction>("tick", 100))
+			->SetText("[TimeoutCheck(tick)]/TimeoutAction.tick.100");
+		chart_.AddTransition(chase, chase, std::make_unique<TimeoutCondition>("tock"), std::make_unique<TimeoutAction>("tock", 250))
+			->SetText("[TimeoutCheck(tock)]/TimeoutAction.tock.250");
 	}
 	void Start() override { chart_.Start(); }
 	void Stop() override { chart_.Stop(); }

@@ -167,7 +167,7 @@ void AppendJsonString(std::string& out, std::string_view text);
 /** Milliseconds since the Unix epoch now (system clock), the "wall" of a "taken" record. */
 double WallMilliseconds();
 
-/** {"type":"taken","t":..,"wall":..,"robot":..,"tr":..,"from":..,"to":..} (no '\n'). */
+/** {"type":"taken","t":..,"wall":..,"robot":..,"tr":..,"from":..,"to":..[,"expression":..]} (no '\n'). */
 std::string TakenRecord(double t, double wall, std::string_view robot, long tr, const statechart_engine::TransitionSegmentBase& transition);
 /** {"type":"active","t":..,"robot":..,"active":[labels]} (no '\n'). */
 std::string ActiveRecord(double t, std::string_view robot, const ChartIndex& index, const statechart_engine::Statechart& chart);

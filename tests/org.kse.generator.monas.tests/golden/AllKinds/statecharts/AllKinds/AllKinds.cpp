@@ -50,17 +50,17 @@ const std::shared_ptr<const Definition>& AllKinds::SharedDefinition() {
 		Node_0_5->SetLabel("0.5");
 
 		// 0.1_TO_0.2: /TimeoutAction.behavior.100
-		definition->AddTransition(Node_0_1, Node_0_2, nullptr, Make<TimeoutAction>("behavior", 100));
+		definition->AddTransition(Node_0_1, Node_0_2, nullptr, Make<TimeoutAction>("behavior", 100))->SetText("/TimeoutAction.behavior.100");
 		// 0.2_TO_Search: [behavior.State.HeadToBMessage==NULL || behavior.State.HeadToBMessage.ballfound()==0]
-		definition->AddTransition(Node_0_2, Node_0_3, Make<kse_statechart_AllKinds::TrCond_0_2_TO_0_3>(), nullptr);
+		definition->AddTransition(Node_0_2, Node_0_3, Make<kse_statechart_AllKinds::TrCond_0_2_TO_0_3>(), nullptr)->SetText("[behavior.State.HeadToBMessage==NULL || behavior.State.HeadToBMessage.ballfound()==0]");
 		// 0.2_TO_Together: [behavior.State.HeadToBMessage.ballfound()>0 &&  !ballAway(worldstate.Data.WorldInfo)]
-		definition->AddTransition(Node_0_2, Node_0_4, Make<kse_statechart_AllKinds::TrCond_0_2_TO_0_4>(), nullptr);
+		definition->AddTransition(Node_0_2, Node_0_4, Make<kse_statechart_AllKinds::TrCond_0_2_TO_0_4>(), nullptr)->SetText("[behavior.State.HeadToBMessage.ballfound()>0 &&\n !ballAway(worldstate.Data.WorldInfo)]");
 		// Search_TO_Search: [TimeoutCheck(behavior) && worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING]/TimeoutAction.behavior.250
-		definition->AddTransition(Node_0_3, Node_0_3, Make<kse_statechart_AllKinds::TrCond_0_3_TO_0_3>(), Make<TimeoutAction>("behavior", 250));
+		definition->AddTransition(Node_0_3, Node_0_3, Make<kse_statechart_AllKinds::TrCond_0_3_TO_0_3>(), Make<TimeoutAction>("behavior", 250))->SetText("[TimeoutCheck(behavior) && worldstate.State.GameStateMessage.player_state()==PLAYER_PLAYING]/TimeoutAction.behavior.250");
 		// Search_TO_0.5: [worldstate.State.GameStateMessage.player_state()!=PLAYER_PLAYING]/publish.motion.Signal.MotionActionMessage.set_command("InitPose");process_messages;publish_all;TimeoutAction.behavior.50
-		definition->AddTransition(Node_0_3, Node_0_5, Make<kse_statechart_AllKinds::TrCond_0_3_TO_0_5>(), Make<kse_statechart_AllKinds::TrAction_0_3_TO_0_5>());
+		definition->AddTransition(Node_0_3, Node_0_5, Make<kse_statechart_AllKinds::TrCond_0_3_TO_0_5>(), Make<kse_statechart_AllKinds::TrAction_0_3_TO_0_5>())->SetText("[worldstate.State.GameStateMessage.player_state()!=PLAYER_PLAYING]/publish.motion.Signal.MotionActionMessage.set_command(\"InitPose\");process_messages;publish_all;TimeoutAction.behavior.50");
 		// Together_TO_0.5: [worldstate.Signal.FallMessage.fall()!=0]
-		definition->AddTransition(Node_0_4, Node_0_5, Make<kse_statechart_AllKinds::TrCond_0_4_TO_0_5>(), nullptr);
+		definition->AddTransition(Node_0_4, Node_0_5, Make<kse_statechart_AllKinds::TrCond_0_4_TO_0_5>(), nullptr)->SetText("[worldstate.Signal.FallMessage.fall()!=0]");
 		// 0.4.1.1_TO_Track
 		definition->AddTransition(Node_0_4_1_1, Node_0_4_1_2, nullptr, nullptr);
 		// Track_TO_0.4.1.3
@@ -68,7 +68,7 @@ const std::shared_ptr<const Definition>& AllKinds::SharedDefinition() {
 		// 0.4.2.1_TO_Walk
 		definition->AddTransition(Node_0_4_2_1, Node_0_4_2_2, nullptr, nullptr);
 		// Walk_TO_0.4.2.3: [worldstate.Data.WorldInfo.myPosition().confidence() > 0.5]
-		definition->AddTransition(Node_0_4_2_2, Node_0_4_2_3, Make<kse_statechart_AllKinds::TrCond_0_4_2_2_TO_0_4_2_3>(), nullptr);
+		definition->AddTransition(Node_0_4_2_2, Node_0_4_2_3, Make<kse_statechart_AllKinds::TrCond_0_4_2_2_TO_0_4_2_3>(), nullptr)->SetText("[worldstate.Data.WorldInfo.myPosition().confidence() > 0.5]");
 		definition->Complete();
 		return std::shared_ptr<const Definition>(std::move(definition));
 	}();

@@ -77,7 +77,7 @@ class MonasTemplates {
 
 				«FOR transition : plan.transitions»
 					// «CppNames.comment(transition.name)»«IF transition.expression !== null && !transition.expression.isBlank»: «CppNames.comment(transition.expression)»«ENDIF»
-					definition->AddTransition(«plan.variable(transition.source)», «plan.variable(transition.target)», «transition.conditionArgument», «transition.actionArgument(plan)»);
+					definition->AddTransition(«plan.variable(transition.source)», «plan.variable(transition.target)», «transition.conditionArgument», «transition.actionArgument(plan)»)«IF transition.expression !== null && !transition.expression.isBlank»->SetText(«CppNames.string(transition.expression)»)«ENDIF»;
 				«ENDFOR»
 				definition->Complete();
 				return std::shared_ptr<const Definition>(std::move(definition));

@@ -142,7 +142,7 @@ class GeneratorTest {
 			}
 		}
 		String chart = Files.readString(folder.resolve("statecharts/AllKinds/AllKinds.cpp"));
-		assertTrue(chart.contains("definition->AddTransition(Node_0_1, Node_0_2, nullptr, Make<TimeoutAction>(\"behavior\", 100));"),
+		assertTrue(chart.contains("definition->AddTransition(Node_0_1, Node_0_2, nullptr, Make<TimeoutAction>(\"behavior\", 100))"),
 				"a list that is one TimeoutAction keeps the runtime's class: " + chart);
 	}
 
