@@ -52,6 +52,8 @@ public final class Kse {
 			                      check models against the statechart rules
 			  label <model.stct>... [-o out.stct]
 			                      renumber labels and rename states and transitions
+			  formula <model.stct>... [-o out.liveness|folder]
+			                      the liveness formulas a statechart stands for (transform's inverse)
 			  generate <model.stct>... <source-folder> | -o <source-folder> [--logger]
 			                      write the Monas C++ of models into a source tree
 			  new-behaviour NAME [-o DIR]
@@ -102,6 +104,21 @@ public final class Kse {
 			the order a walk along the transitions reaches the states, END last), names auxiliary
 			states after their label and transitions '<source>_TO_<target>'. Labeling twice
 			changes nothing. Writes each model in place unless -o is given (with one model).""";
+
+	private static final String FORMULA_HELP = """
+			usage: kse formula <model.stct>... [-o out.liveness|folder]
+
+			Writes the liveness formulas a statechart stands for, the root first, as kse transform
+			reads them: a chart that kse transform made gives its formulas back (up to parentheses
+			around a whole right side and capabilities nothing uses), and transforms into the same
+			chart. A state of the transformation's shape whose name is not the spelling of its term
+			is a capability of that name. For a chart edited by hand, the closest formulas, and on
+			standard error one line per state for what they cannot express (guards and timers,
+			transitions between levels, states that form no formula's shape), as
+			'file: label (name): warning: message'. Exit code 0 when the formulas express the whole
+			chart, 1 when something was not expressed (the formulas are still written).
+			  -o, --output FILE   where to write the formulas (default: standard output); with
+			                      several models, the folder to write <model>.liveness files into""";
 
 	private static final String GENERATE_HELP = """
 			usage: kse generate <model.stct>... (<source-folder> | -o <source-folder>)
@@ -249,6 +266,7 @@ public final class Kse {
 				case "transform" -> transform(rest);
 				case "validate" -> validate(rest);
 				case "label" -> label(rest);
+				case "formula" -> formula(rest);
 				case "generate" -> generate(rest);
 				case "new-behaviour" -> newBehaviour(rest);
 				case "diagram" -> diagram(rest);
@@ -297,6 +315,7 @@ public final class Kse {
 			case "transform" -> TRANSFORM_HELP;
 			case "validate" -> VALIDATE_HELP;
 			case "label" -> LABEL_HELP;
+			case "formula" -> FORMULA_HELP;
 			case "generate" -> GENERATE_HELP;
 			case "new-behaviour" -> NEW_BEHAVIOUR_HELP;
 			case "diagram" -> DIAGRAM_HELP;
@@ -438,6 +457,21 @@ public final class Kse {
 			out.println("labeled " + target + " (" + statistics(model) + ")");
 			return OK;
 		});
+	}
+
+	private int formula(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output"), List.of());
+		if (options.help) {
+			out.println(FORMULA_HELP);
+			return OK;
+		}
+		List<Path> models = options.many("model file");
+		String output = options.value("-o", "--output");
+		// several models, or a folder that exists: one <model>.liveness each in that folder
+		Path folder = output != null && (models.size() > 1 || Files.isDirectory(Path.of(output))) ? folder(Path.of(output)) : null;
+		return each(models, model -> FormulaCommand.run(model,
+				folder != null ? folder.resolve(withExtension(model, "liveness").getFileName()) : output != null ? Path.of(output) : null,
+				models.size() > 1, out, err));
 	}
 
 	private int generate(List<String> args) throws IOException, UsageException {

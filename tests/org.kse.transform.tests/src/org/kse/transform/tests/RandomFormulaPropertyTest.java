@@ -20,6 +20,7 @@ import org.kse.liveness.validation.LivenessValidator;
 import org.kse.model.NodeKind;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Node;
+import org.kse.testing.RandomFormulas;
 import org.kse.transform.FormulaTransformation;
 import org.kse.validation.ModelValidation;
 import org.kse.validation.StatechartValidator;
@@ -38,7 +39,7 @@ class RandomFormulaPropertyTest {
 	@TestFactory
 	Stream<DynamicTest> randomValidFormulasGiveValidModels() {
 		return IntStream.range(0, CASES).mapToObj(seed -> {
-			String formulas = new FormulaGenerator(new Random(seed)).file();
+			String formulas = new RandomFormulas(new Random(seed)).file();
 			return DynamicTest.dynamicTest("seed " + seed, () -> check(formulas));
 		});
 	}
@@ -63,64 +64,5 @@ class RandomFormulaPropertyTest {
 		Labeler.label(model);
 		assertEquals(before, Statecharts.allNodes(model).stream().map(Node::getLabel).toList(),
 				() -> formulas + "\nLabel changed the transformation's labels");
-	}
-
-	/** Random valid formula files: capabilities only use later ones, so there is no recursion. */
-	static final class FormulaGenerator {
-		private final Random random;
-		private int activities;
-		private int capabilities;
-
-		FormulaGenerator(Random random) {
-			this.random = random;
-		}
-
-		String file() {
-			capabilities = 1 + random.nextInt(4);
-			StringBuilder out = new StringBuilder();
-			for (int i = 0; i < capabilities; i++) {
-				out.append("cap").append(i).append(" = ").append(expression(i, 0)).append('\n');
-			}
-			return out.toString();
-		}
-
-		private String expression(int capability, int depth) {
-			int terms = 1 + random.nextInt(depth > 1 ? 2 : 4);
-			String operator = List.of(".", "|", "||").get(random.nextInt(3));
-			StringBuilder out = new StringBuilder();
-			for (int i = 0; i < terms; i++) {
-				if (i > 0) {
-					out.append(' ').append(operator).append(' ');
-				}
-				out.append(term(capability, depth));
-			}
-			return out.toString();
-		}
-
-		private String term(int capability, int depth) {
-			int choice = random.nextInt(depth > 2 ? 2 : 7);
-			return switch (choice) {
-				case 0 -> "Act" + activities++;
-				case 1 -> capability + 1 < capabilities && random.nextBoolean() ? "cap" + (capability + 1 + random.nextInt(capabilities - capability - 1))
-						: "Act" + activities++;
-				case 2 -> "(" + expression(capability, depth + 1) + ")" + suffix(false);
-				case 3 -> "[" + expression(capability, depth + 1) + "]";
-				case 4 -> "Act" + activities++ + suffix(true);
-				case 5 -> "|" + "Act" + activities++ + "~|" + (1 + random.nextInt(3)) + suffix(false);
-				default -> "(" + expression(capability, depth + 1) + ")" + suffix(true);
-			};
-		}
-
-		/** None, one, or (one time in four) a chain of two, which applies the second to the first. */
-		private String suffix(boolean required) {
-			int choice = random.nextInt(required ? 3 : 4);
-			String suffix = switch (choice) {
-				case 0 -> "*";
-				case 1 -> "+";
-				case 2 -> "~";
-				default -> "";
-			};
-			return !suffix.isEmpty() && random.nextInt(4) == 0 ? suffix + suffix(true) : suffix;
-		}
 	}
 }
