@@ -13,7 +13,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
-import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -97,7 +96,7 @@ class SimulationTest {
 	}
 
 	@Test
-	void aRecordedTraceSavesAsACaseTheSimulatorPasses() throws Exception {
+	void aRecordedTraceSavesAsACaseWithItsStatechartRenamed() throws Exception {
 		runtime();
 		Model model = StatechartResources.load(CASES.resolve("SelfLoopRerunsActivity.stct"));
 		try (SimulationSession session = session("SelfLoopRerunsActivity")) {
@@ -121,15 +120,8 @@ class SimulationTest {
 					""", Files.readString(saved));
 			assertEquals("MyLoopCase", StatechartResources.load(temp.resolve("cases/MyLoopCase.stct")).getName());
 		}
-		// the saved pair is a conformance case: its statechart's simulator passes it
-		Model saved = StatechartResources.load(temp.resolve("cases/MyLoopCase.stct"));
-		SimulatorBuilder.Simulator simulator = SimulatorBuilder.build(saved, RuntimePrefix.resolve(runtime().toString()), temp.resolve("replay"), SimulatorBuilder.Progress.NONE);
-		Process check = new ProcessBuilder(simulator.program().toString(), "--activities", String.join(",", simulator.activities()), "--check",
-				temp.resolve("cases/MyLoopCase.case").toString()).redirectErrorStream(true).start();
-		String output = new String(check.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-		assertTrue(check.waitFor(60, TimeUnit.SECONDS));
-		assertEquals(0, check.exitValue(), output);
-		assertTrue(output.contains("PASS MyLoopCase.case"), output);
+		// that the simulator passes the saved pair as a case is tests/conformance/run.sh's check (a
+		// simulator of its own for the saved statechart)
 	}
 
 	@Test
