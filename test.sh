@@ -62,7 +62,7 @@ section "The update site installed with the p2 director into a bare Eclipse plat
 tests/product/install-into-eclipse.sh "$out/install-into-eclipse"
 
 section "Workbench start: KSE next to a bare Eclipse platform, warm (benchmark, figures only)"
-bench/workbench-start.sh 2 || echo "   (the start benchmark did not finish; figures are never a failure)"
+bench/workbench-start.sh 1 || echo "   (the start benchmark did not finish; figures are never a failure)"
 
 section "Diagram notation: a 1,000-state statechart opened and arranged with ELK (benchmark)"
 bench/notation.sh 2>&1 | grep -v -e '^log4j:' -e '^WARNING:'
@@ -120,7 +120,7 @@ echo "   (screenshots: tests/org.kse.diagram.e2e/target/screenshots)"
 KSE_MATCH="$out/examples/kse-match" tests/org.kse.diagram.e2e/run.sh
 
 section "Live monitor: all 10 robots of a 5-against-5 match on one board in headless Chromium, at 1x and 10x (benchmark, figures only)"
-bench/monitor.sh "$out/examples/kse-match" || echo "   (the monitor benchmark did not finish; figures are never a failure)"
+KSE_MONITOR_BENCH_HALF_1=10 bench/monitor.sh "$out/examples/kse-match" || echo "   (the monitor benchmark did not finish; figures are never a failure)"
 
 section "Replay: a 10-minute 5-against-5 match log opened and scrubbed in kse serve's page in headless Chromium (benchmark, figures only)"
 bench/replay.sh "$out/examples/kse-match" || echo "   (the replay benchmark did not finish; figures are never a failure)"
@@ -138,7 +138,7 @@ section "kse demo (the README's first command) on the runtime installed above"
 KSE_RUNTIME_PREFIX="$out/runtime-prefix" ./kse demo --out "$out/demo" --half 60
 
 section "kse command line: whole processes, the launcher against the Equinox start (benchmark, figures only)"
-bench/cli.sh 2 || echo "   (the command line benchmark did not finish; figures are never a failure)"
+bench/cli.sh 1 || echo "   (the command line benchmark did not finish; figures are never a failure)"
 
 section "kse smoke run"
 ./kse transform -q examples/Goalie/Goalie.liveness -o "$out/Goalie.stct"
