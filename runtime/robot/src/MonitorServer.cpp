@@ -446,10 +446,7 @@ MonitorServer::Verdict MonitorServer::Handle(Client& client, std::string_view li
 		const auto& wanted = message->robots.front();
 		const auto found = std::find(robots_.begin(), robots_.end(), wanted);
 		if (found == robots_.end() || !on_blackboard_) {
-			std::string answer = "{\"type\":\"blackboard\",\"robot\":";
-			AppendJsonString(answer, wanted);
-			answer += found == robots_.end() ? ",\"error\":\"no such robot\"}" : ",\"error\":\"this program shows no blackboards\"}";
-			Queue(client, answer);
+			Queue(client, BlackboardRefusal(wanted, found == robots_.end() ? "no such robot" : "this program shows no blackboards"));
 		} else {
 			on_blackboard_(client.id, static_cast<std::size_t>(found - robots_.begin()));
 		}
@@ -711,6 +708,15 @@ std::string ActiveRecord(double t, std::string_view robot, const ChartIndex& ind
 	AppendJsonString(out, robot);
 	out += ",\"active\":";
 	index.AppendActive(out, chart);
+	out += '}';
+	return out;
+}
+
+std::string BlackboardRefusal(std::string_view robot, std::string_view why) {
+	std::string out = "{\"type\":\"blackboard\",\"robot\":";
+	AppendJsonString(out, robot);
+	out += ",\"error\":";
+	AppendJsonString(out, why);
 	out += '}';
 	return out;
 }

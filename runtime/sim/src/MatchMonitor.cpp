@@ -42,9 +42,7 @@ MatchMonitor::MatchMonitor(const Match& match, robot::MonitorServer::Options opt
 	server_.OnBlackboard([this](std::size_t client, std::size_t robot) {
 		const robot::Robot* process = match_.GetRobot(robot);
 		if (process == nullptr) {
-			std::string answer = "{\"type\":\"blackboard\",\"robot\":";
-			robot::AppendJsonString(answer, match_.RobotId(robot));
-			server_.SendTo(client, answer + ",\"error\":\"this robot runs no statechart\"}");
+			server_.SendTo(client, robot::BlackboardRefusal(match_.RobotId(robot), "this robot runs no statechart"));
 			return;
 		}
 		server_.SendTo(client, robot::BlackboardRecord(match_.Time(), match_.RobotId(robot), process->Hub()));

@@ -177,6 +177,8 @@ std::string ActiveRecord(double t, std::string_view robot, const ChartIndex& ind
  * protobuf's one-line text format, cut at 2 KiB (then "cut":true).
  */
 std::string BlackboardRecord(double t, std::string_view robot, const messaging::MessageHub& hub);
+/** {"type":"blackboard","robot":..,"error":..}: why a robot's blackboard cannot be shown. */
+std::string BlackboardRefusal(std::string_view robot, std::string_view why);
 
 namespace monitor_detail {
 /** The two messages a client may send, read strictly; nullopt for anything else. */

@@ -41,7 +41,7 @@ final class FormulaCommand {
 			if (parent != null) {
 				Files.createDirectories(parent);
 			}
-			Files.writeString(output, result.fileText(), StandardCharsets.UTF_8);
+			StatechartResources.writeAtomically(output, result.fileText().getBytes(StandardCharsets.UTF_8));
 			out.println("wrote " + output + " (" + result.formulas().size() + (result.formulas().size() == 1 ? " formula)" : " formulas)"));
 		}
 		// after the formulas, so that on a terminal the warnings follow what they are about

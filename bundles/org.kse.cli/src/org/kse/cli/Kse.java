@@ -24,6 +24,7 @@ import org.kse.messages.StandardMessages;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.simulation.RuntimePrefix;
+import org.kse.simulation.Script;
 import org.kse.simulation.SimulationException;
 import org.kse.simulation.SimulationSession;
 import org.kse.simulation.SimulatorBuilder;
@@ -714,10 +715,10 @@ public final class Kse {
 		quiet = options.flag("-q", "--quiet");
 		Model model = StatechartResources.load(file);
 		String script = options.value("--script");
-		List<Simulate.Step> steps = null;
+		List<Script.Step> steps = null;
 		if (script != null) {
 			try (BufferedReader reader = Files.newBufferedReader(Path.of(script), StandardCharsets.UTF_8)) {
-				steps = Simulate.readScript(reader);
+				steps = Script.read(reader);
 			} catch (NoSuchFileException e) {
 				throw new IOException(script + ": no such file");
 			} catch (IOException e) {

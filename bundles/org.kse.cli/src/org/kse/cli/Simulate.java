@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.kse.simulation.Script;
 import org.kse.simulation.SimulationException;
 import org.kse.simulation.SimulationSession;
 import org.kse.simulation.SimulatorBuilder;
@@ -19,10 +20,6 @@ import org.kse.model.statechart.Model;
  */
 final class Simulate {
 
-	/** A command of a script and the lines listed under it (none: not checked). */
-	record Step(int line, String command, List<String> expected) {
-	}
-
 	private final PrintStream out;
 	private final PrintStream err;
 
@@ -31,39 +28,17 @@ final class Simulate {
 		this.err = err;
 	}
 
-	/** Reads a script: commands at the first column, the lines they must cause indented below; `model` and comments skipped. */
-	static List<Step> readScript(BufferedReader input) throws IOException {
-		List<Step> steps = new ArrayList<>();
-		int number = 0;
-		for (String raw; (raw = input.readLine()) != null;) {
-			number++;
-			String line = raw.strip();
-			if (line.isEmpty() || line.startsWith("#")) {
-				continue;
-			}
-			if (Character.isWhitespace(raw.charAt(0))) {
-				if (steps.isEmpty()) {
-					throw new IOException("line " + number + ": an expected line before any command");
-				}
-				steps.get(steps.size() - 1).expected().add(line);
-			} else if (!line.startsWith("model ")) {
-				steps.add(new Step(number, line, new ArrayList<>()));
-			}
-		}
-		return steps;
-	}
-
 	/**
 	 * Runs a script: every command in turn, its lines printed. In a case (a script that lists the
 	 * lines commands cause), a command whose lines differ is reported with both. Returns whether
 	 * all matched.
 	 */
-	boolean runScript(SimulationSession session, String origin, List<Step> steps) throws IOException, SimulationException {
+	boolean runScript(SimulationSession session, String origin, List<Script.Step> steps) throws IOException, SimulationException {
 		// a script that lists no lines at all is a list of commands; one that lists some is a case,
 		// where a command with none listed must cause none
 		boolean isCase = steps.stream().anyMatch(step -> !step.expected().isEmpty());
 		boolean same = true;
-		for (Step step : steps) {
+		for (Script.Step step : steps) {
 			SimulationSession.Result result = session.execute(step.command());
 			print(result);
 			if (!result.ok()) {

@@ -192,7 +192,8 @@ public final class SimulatorBuilder {
 		}
 	}
 
-	static boolean onPath(String program) {
+	/** Whether a program of that name is on the PATH: the simulation's tools are looked for there. */
+	public static boolean onPath(String program) {
 		String path = System.getenv("PATH");
 		if (path == null) {
 			return false;

@@ -9,12 +9,9 @@ import static org.kse.testing.Models.child;
 import static org.kse.testing.Models.root;
 import static org.kse.testing.Models.transition;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -28,6 +25,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.kse.testing.CommandRun;
 import org.kse.testing.Models;
 import org.kse.cli.Kse;
 import org.kse.model.StatechartResources;
@@ -41,21 +39,8 @@ class CommandLineTest {
 	@TempDir
 	Path directory;
 
-	record Run(int code, String out, String err) {
-		String all() {
-			return "exit " + code + "\n--- out:\n" + out + "--- err:\n" + err;
-		}
-	}
-
-	static Run kse(String... args) {
-		ByteArrayOutputStream out = new ByteArrayOutputStream();
-		ByteArrayOutputStream err = new ByteArrayOutputStream();
-		int code;
-		try (PrintStream outStream = new PrintStream(out, true, StandardCharsets.UTF_8);
-				PrintStream errStream = new PrintStream(err, true, StandardCharsets.UTF_8)) {
-			code = new Kse(outStream, errStream).run(args);
-		}
-		return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+	static CommandRun kse(String... args) {
+		return CommandRun.capture((out, err) -> new Kse(out, err).run(args));
 	}
 
 	// ------------------------------------------------------------------ transform
@@ -63,7 +48,7 @@ class CommandLineTest {
 	@Test
 	void transformWritesTheModelNextToTheFormula() throws IOException {
 		Path formula = copyLegacy("Goalie/Goalie.txt");
-		Run run = kse("transform", formula.toString());
+		CommandRun run = kse("transform", formula.toString());
 
 		Path model = directory.resolve("Goalie.stct");
 		assertEquals(Kse.OK, run.code(), run.all());
@@ -92,7 +77,7 @@ class CommandLineTest {
 	void transformWritesWhereOutputSays() throws IOException {
 		Path formula = copyLegacy("Goalie/Goalie.txt");
 		Path output = directory.resolve("out/models/keeper.stct");
-		Run run = kse("transform", formula.toString(), "-o", output.toString(), "--name", "Keeper", "--quiet");
+		CommandRun run = kse("transform", formula.toString(), "-o", output.toString(), "--name", "Keeper", "--quiet");
 
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertTrue(run.out().contains("wrote " + output), run.all());
@@ -102,7 +87,7 @@ class CommandLineTest {
 		assertEquals("Keeper", StatechartResources.load(output).getName());
 
 		Path other = directory.resolve("other.stct");
-		Run longOption = kse("transform", "--output", other.toString(), formula.toString());
+		CommandRun longOption = kse("transform", "--output", other.toString(), formula.toString());
 		assertEquals(Kse.OK, longOption.code(), longOption.all());
 		Model byDefaultName = StatechartResources.load(other);
 		assertEquals("Goalie", byDefaultName.getName());
@@ -124,7 +109,7 @@ class CommandLineTest {
 	@Test
 	void formulaWithSyntaxErrorIsReportedAtItsPositionAndNothingIsWritten() throws IOException {
 		Path formula = Files.writeString(directory.resolve("broken.txt"), "Broken\nA = B . (C | D\n");
-		Run run = kse("transform", formula.toString());
+		CommandRun run = kse("transform", formula.toString());
 
 		assertEquals(Kse.INVALID, run.code(), run.all());
 		assertTrue(run.err().contains(formula + ":2:15: error: "), "the end of line 2, where ')' is missing: " + run.all());
@@ -137,7 +122,7 @@ class CommandLineTest {
 	void mixedOperatorsAreAnErrorWithTheirColumn() throws IOException {
 		Path formula = Files.writeString(directory.resolve("mixed.txt"), "A = B . C | D\n");
 		Path output = directory.resolve("mixed-out.stct");
-		Run run = kse("transform", formula.toString(), "-o", output.toString());
+		CommandRun run = kse("transform", formula.toString(), "-o", output.toString());
 
 		assertEquals(Kse.INVALID, run.code(), run.all());
 		assertTrue(run.err().contains(formula + ":1:11: error: "), "the '|' at column 11: " + run.all());
@@ -148,7 +133,7 @@ class CommandLineTest {
 	@Test
 	void formulaThatIsNotTextCannotBeRead() throws IOException {
 		Path formula = Files.write(directory.resolve("binary.txt"), new byte[] { (byte) 0xff, (byte) 0xfe, 0, 1, (byte) 0xc3 });
-		Run run = kse("transform", formula.toString());
+		CommandRun run = kse("transform", formula.toString());
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains(formula.toString()), run.all());
 		assertEquals(List.of(formula), list(directory));
@@ -159,7 +144,7 @@ class CommandLineTest {
 	@Test
 	void validateAcceptsTheLegacyGoalie() {
 		Path goalie = Models.legacy("Goalie/Goalie.stct");
-		Run run = kse("validate", goalie.toString());
+		CommandRun run = kse("validate", goalie.toString());
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertFalse(run.out().contains("error"), run.all());
 		assertTrue(run.err().contains(goalie + ": 0 errors, 0 warnings"), run.all());
@@ -176,7 +161,7 @@ class CommandLineTest {
 		Path file = directory.resolve("and-root.stct");
 		StatechartResources.save(model, file);
 
-		Run run = kse("validate", file.toString());
+		CommandRun run = kse("validate", file.toString());
 		assertEquals(Kse.INVALID, run.code(), run.all());
 		List<String> lines = run.out().lines().toList();
 		assertEquals(List.of(file + ": 0 (Main): error: the root state must be an OR state, not AND",
@@ -193,7 +178,7 @@ class CommandLineTest {
 		Path file = directory.resolve("warned.stct");
 		StatechartResources.save(model, file);
 
-		Run run = kse("validate", file.toString());
+		CommandRun run = kse("validate", file.toString());
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertEquals(List.of(file + ": 0.1 (Work): warning: the label is also used by 0.1 (0.1); run Label to renumber"), run.out().lines().toList(),
 				run.all());
@@ -203,7 +188,7 @@ class CommandLineTest {
 	@Test
 	void validateFindsTheTypoInTheLegacyGuiTester() {
 		Path tester = Models.legacy("GUITester/GUITester.stct");
-		Run run = kse("validate", tester.toString());
+		CommandRun run = kse("validate", tester.toString());
 		assertEquals(Kse.INVALID, run.code(), run.all());
 		assertTrue(run.out().startsWith(tester + ": 0.2.3.3.2->0.2.3.3.3 (GoToPositionTO0.2.3.3.3): error: expression 1:45: "), run.all());
 	}
@@ -224,7 +209,7 @@ class CommandLineTest {
 		Path file = copyLegacy("Goalie/Goalie.stct");
 		byte[] original = Files.readAllBytes(file);
 
-		Run first = kse("label", file.toString());
+		CommandRun first = kse("label", file.toString());
 		assertEquals(Kse.OK, first.code(), first.all());
 		assertTrue(first.out().contains("labeled " + file), first.all());
 		byte[] labeled = Files.readAllBytes(file);
@@ -233,7 +218,7 @@ class CommandLineTest {
 		assertEquals("0.2.2.3.3.2", Models.byName(model, "Scan").getLabel());
 		assertTrue(model.getTransitions().stream().anyMatch(t -> "Scan_TO_Scan".equals(t.getName())));
 
-		Run second = kse("label", file.toString());
+		CommandRun second = kse("label", file.toString());
 		assertEquals(Kse.OK, second.code(), second.all());
 		assertArrayEquals(labeled, Files.readAllBytes(file), "labeling a labeled file changes nothing");
 		assertEquals(List.of(file), list(directory), "no temporary files left");
@@ -245,7 +230,7 @@ class CommandLineTest {
 		byte[] original = Files.readAllBytes(file);
 		Path output = directory.resolve("labeled.stct");
 
-		Run run = kse("label", file.toString(), "-o", output.toString());
+		CommandRun run = kse("label", file.toString(), "-o", output.toString());
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertTrue(run.out().contains("labeled " + output), run.all());
 		assertArrayEquals(original, Files.readAllBytes(file), "the input is not touched");
@@ -280,7 +265,7 @@ class CommandLineTest {
 	@ValueSource(strings = { "transform", "validate", "label" })
 	void missingFileIsNamedAndExitsWithTwo(String command) throws IOException {
 		Path missing = directory.resolve("nowhere." + (command.equals("transform") ? "txt" : "stct"));
-		Run run = kse(command, missing.toString());
+		CommandRun run = kse(command, missing.toString());
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains(missing.toString()), run.all());
 		assertEquals(List.of(), list(directory), "nothing written");
@@ -290,7 +275,7 @@ class CommandLineTest {
 	void aFileThatIsNotAModelCannotBeValidatedOrLabeled() throws IOException {
 		Path formula = copyLegacy("Goalie/Goalie.txt");
 		for (String command : List.of("validate", "label")) {
-			Run run = kse(command, formula.toString());
+			CommandRun run = kse(command, formula.toString());
 			assertEquals(Kse.FAILED, run.code(), run.all());
 			assertTrue(run.err().contains(formula + ":1:1: not a statechart model: the file is not XML"), run.all());
 		}
@@ -299,7 +284,7 @@ class CommandLineTest {
 
 	@Test
 	void unknownCommandExitsWithTwo() {
-		Run run = kse("frobnicate", "x.stct");
+		CommandRun run = kse("frobnicate", "x.stct");
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains("unknown command 'frobnicate'"), run.all());
 		assertTrue(run.err().contains("--help"), run.all());
@@ -308,7 +293,7 @@ class CommandLineTest {
 	@ParameterizedTest
 	@ValueSource(strings = { "transform", "validate", "label" })
 	void unknownOptionExitsWithTwo(String command) {
-		Run run = kse(command, "--frobnicate", directory.resolve("x").toString());
+		CommandRun run = kse(command, "--frobnicate", directory.resolve("x").toString());
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains("unknown option --frobnicate"), run.all());
 	}
@@ -318,7 +303,7 @@ class CommandLineTest {
 		Path file = directory.resolve("a.stct");
 		for (String[] args : new String[][] { {}, { "validate" }, { "label" }, { "transform" }, { "validate", file.toString(), file.toString() },
 				{ "label", file.toString(), "-o" }, { "transform", "f.txt", "--name" } }) {
-			Run run = kse(args);
+			CommandRun run = kse(args);
 			assertEquals(Kse.FAILED, run.code(), () -> String.join(" ", args) + "\n" + run.all());
 			assertFalse(run.err().isBlank(), () -> String.join(" ", args) + ": says why");
 		}
@@ -329,7 +314,7 @@ class CommandLineTest {
 	@ValueSource(strings = { "transform", "validate", "label" })
 	void helpOfEachCommand(String command) {
 		for (String[] args : new String[][] { { command, "--help" }, { command, "-h" }, { "help", command } }) {
-			Run run = kse(args);
+			CommandRun run = kse(args);
 			assertEquals(Kse.OK, run.code(), run.all());
 			assertTrue(run.out().startsWith("usage: kse " + command + " "), run.all());
 		}
@@ -340,7 +325,7 @@ class CommandLineTest {
 	@Test
 	void generalHelpListsTheCommands() {
 		for (String[] args : new String[][] { { "--help" }, { "-h" }, { "help" } }) {
-			Run run = kse(args);
+			CommandRun run = kse(args);
 			assertEquals(Kse.OK, run.code(), run.all());
 			assertTrue(run.out().startsWith("usage: kse <command>"), run.all());
 			for (String command : List.of("transform", "validate", "label")) {
@@ -362,16 +347,16 @@ class CommandLineTest {
 		StatechartResources.save(model, broken);
 		Path missing = directory.resolve("Missing.stct");
 
-		Run run = kse("validate", goalie.toString(), broken.toString(), missing.toString(), tester.toString());
+		CommandRun run = kse("validate", goalie.toString(), broken.toString(), missing.toString(), tester.toString());
 		assertEquals(Kse.FAILED, run.code(), "a model that cannot be read makes the run fail: " + run.all());
 		assertTrue(run.err().contains(goalie + ": 0 errors"), run.all());
 		assertTrue(run.err().contains(tester + ": 0 errors"), "the model after the missing one is still checked: " + run.all());
 		assertTrue(run.out().contains(broken + ": ") && run.out().contains(": error: "), run.all());
 		assertTrue(run.err().contains("kse: " + missing), run.all());
 
-		Run withoutMissing = kse("validate", goalie.toString(), broken.toString());
+		CommandRun withoutMissing = kse("validate", goalie.toString(), broken.toString());
 		assertEquals(Kse.INVALID, withoutMissing.code(), "errors in one of the models: " + withoutMissing.all());
-		Run good = kse("validate", goalie.toString(), tester.toString(), "--source", directory.toString());
+		CommandRun good = kse("validate", goalie.toString(), tester.toString(), "--source", directory.toString());
 		assertEquals(Kse.OK, good.code(), good.all());
 	}
 
@@ -380,14 +365,14 @@ class CommandLineTest {
 		Path goalie = copyLegacy("Goalie/Goalie.stct");
 		Path tester = copyLegacy("TestBehavior/TestBehavior.stct");
 		Path tree = directory.resolve("src");
-		Run run = kse("generate", "-q", goalie.toString(), tester.toString(), "-o", tree.toString());
+		CommandRun run = kse("generate", "-q", goalie.toString(), tester.toString(), "-o", tree.toString());
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertTrue(Files.isRegularFile(tree.resolve("statecharts/Goalie/Goalie.cpp")), run.all());
 		assertTrue(Files.isRegularFile(tree.resolve("statecharts/TestBehavior/TestBehavior.cpp")), run.all());
 		assertTrue(Files.isDirectory(tree.resolve("activities")), "skeletons of the activities: " + run.all());
 
 		Path buildTree = directory.resolve("build");
-		Run statechartsOnly = kse("generate", "-q", "--no-activities", goalie.toString(), "-o", buildTree.toString());
+		CommandRun statechartsOnly = kse("generate", "-q", "--no-activities", goalie.toString(), "-o", buildTree.toString());
 		assertEquals(Kse.OK, statechartsOnly.code(), statechartsOnly.all());
 		assertTrue(Files.isRegularFile(buildTree.resolve("statecharts/Goalie/Goalie.cpp")), statechartsOnly.all());
 		assertFalse(Files.exists(buildTree.resolve("activities")), "--no-activities writes no skeleton: " + statechartsOnly.all());
@@ -399,19 +384,19 @@ class CommandLineTest {
 		Path goalie = copyLegacy("Goalie/Goalie.txt");
 		Path tester = copyLegacy("GUITester/GUITester.txt");
 		Path models = directory.resolve("models");
-		Run run = kse("transform", "-q", goalie.toString(), tester.toString(), "-o", models.toString());
+		CommandRun run = kse("transform", "-q", goalie.toString(), tester.toString(), "-o", models.toString());
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertEquals(List.of(models.resolve("GUITester.stct"), models.resolve("Goalie.stct")), list(models), run.all());
 
-		Run named = kse("transform", "-q", goalie.toString(), tester.toString(), "--name", "One");
+		CommandRun named = kse("transform", "-q", goalie.toString(), tester.toString(), "--name", "One");
 		assertEquals(Kse.FAILED, named.code(), named.all());
 		assertTrue(named.err().contains("--name names one model"), named.all());
 
-		Run label = kse("label", models.resolve("Goalie.stct").toString(), models.resolve("GUITester.stct").toString());
+		CommandRun label = kse("label", models.resolve("Goalie.stct").toString(), models.resolve("GUITester.stct").toString());
 		assertEquals(Kse.OK, label.code(), label.all());
 		assertTrue(label.out().contains("labeled " + models.resolve("Goalie.stct")) && label.out().contains("labeled " + models.resolve("GUITester.stct")),
 				label.all());
-		Run oneOutputForTwo = kse("label", models.resolve("Goalie.stct").toString(), models.resolve("GUITester.stct").toString(), "-o", "x.stct");
+		CommandRun oneOutputForTwo = kse("label", models.resolve("Goalie.stct").toString(), models.resolve("GUITester.stct").toString(), "-o", "x.stct");
 		assertEquals(Kse.FAILED, oneOutputForTwo.code(), oneOutputForTwo.all());
 	}
 
@@ -426,7 +411,7 @@ class CommandLineTest {
 		String to = guarded.getTarget().getLabel();
 		String expression = "[behavior.State.HeadToBMessage.ballfound()>2]/TimeoutAction.behavior.400";
 
-		Run set = kse("edit-transition", goalie.toString(), from, to, "--expression", expression);
+		CommandRun set = kse("edit-transition", goalie.toString(), from, to, "--expression", expression);
 		assertEquals(Kse.OK, set.code(), set.all());
 		assertTrue(set.out().startsWith("set " + from), set.all());
 		assertTrue(set.out().contains("(was " + guarded.getTE().replace("\n", " ")), set.all());
@@ -435,17 +420,17 @@ class CommandLineTest {
 		assertEquals(Kse.OK, kse("validate", goalie.toString()).code(), "the edited model still validates");
 
 		byte[] before = Files.readAllBytes(goalie);
-		Run broken = kse("edit-transition", goalie.toString(), from, to, "--expression", "[behavior.State.HeadToBMesage.ballfound()>0]");
+		CommandRun broken = kse("edit-transition", goalie.toString(), from, to, "--expression", "[behavior.State.HeadToBMesage.ballfound()>0]");
 		assertEquals(Kse.INVALID, broken.code(), broken.all());
 		assertTrue(broken.err().contains(": error: expression 1:17: unknown message type 'HeadToBMesage'"), broken.all());
 		assertTrue(broken.err().contains("did you mean 'HeadToBMessage'"), broken.all());
 		assertArrayEquals(before, Files.readAllBytes(goalie), "a refused expression leaves the file as it was");
 
-		Run syntax = kse("edit-transition", goalie.toString(), from, to, "--expression", "[(");
+		CommandRun syntax = kse("edit-transition", goalie.toString(), from, to, "--expression", "[(");
 		assertEquals(Kse.INVALID, syntax.code(), syntax.all());
 		assertArrayEquals(before, Files.readAllBytes(goalie));
 
-		Run cleared = kse("edit-transition", goalie.toString(), from, to, "--expression", "");
+		CommandRun cleared = kse("edit-transition", goalie.toString(), from, to, "--expression", "");
 		assertEquals(Kse.OK, cleared.code(), cleared.all());
 		assertEquals(0, StatechartResources.load(goalie).getTransitions().stream().filter(t -> expression.equals(t.getTE())).count());
 	}
@@ -463,24 +448,24 @@ class CommandLineTest {
 		Path file = directory.resolve("Twice.stct");
 		StatechartResources.save(model, file);
 
-		Run missing = kse("edit-transition", file.toString(), "Work", "Nowhere", "--expression", "");
+		CommandRun missing = kse("edit-transition", file.toString(), "Work", "Nowhere", "--expression", "");
 		assertEquals(Kse.INVALID, missing.code(), missing.all());
 		assertTrue(missing.err().contains("no state labeled or named 'Nowhere'"), missing.all());
 
-		Run none = kse("edit-transition", file.toString(), "0.3", "Work", "--expression", "");
+		CommandRun none = kse("edit-transition", file.toString(), "0.3", "Work", "--expression", "");
 		assertEquals(Kse.INVALID, none.code(), none.all());
 		assertTrue(none.err().contains("no transition from 0.3 to 0.2 (Work)"), none.all());
 
-		Run two = kse("edit-transition", file.toString(), "Work", "0.3", "--expression", "[TimeoutCheck(motion)]");
+		CommandRun two = kse("edit-transition", file.toString(), "Work", "0.3", "--expression", "[TimeoutCheck(motion)]");
 		assertEquals(Kse.INVALID, two.code(), two.all());
 		assertTrue(two.err().contains("2 transitions from 0.2 (Work) to 0.3; say which with --index:"), two.all());
 		assertTrue(two.err().contains("--index 1: [TimeoutCheck(behavior)]") && two.err().contains("--index 2: (no expression)"), two.all());
 
-		Run second = kse("edit-transition", file.toString(), "Work", "0.3", "--index", "2", "--expression", "[TimeoutCheck(motion)]");
+		CommandRun second = kse("edit-transition", file.toString(), "Work", "0.3", "--index", "2", "--expression", "[TimeoutCheck(motion)]");
 		assertEquals(Kse.OK, second.code(), second.all());
 		assertEquals("[TimeoutCheck(motion)]", StatechartResources.load(file).getTransitions().get(2).getTE());
 
-		Run usage = kse("edit-transition", file.toString(), "Work", "0.3");
+		CommandRun usage = kse("edit-transition", file.toString(), "Work", "0.3");
 		assertEquals(Kse.FAILED, usage.code(), usage.all());
 		assertTrue(usage.err().contains("--expression TEXT is required"), usage.all());
 	}
@@ -503,12 +488,12 @@ class CommandLineTest {
 	void generateWritesMonasCodeAndRefusesModelsWithErrors() throws IOException {
 		Path legacy = Models.LEGACY;
 		Path source = directory.resolve("src");
-		Run run = kse("generate", "--quiet", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
+		CommandRun run = kse("generate", "--quiet", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
 		assertEquals(0, run.code(), run::all);
 		assertTrue(run.out().contains("generated Goalie into"), run::all);
 		assertTrue(Files.isRegularFile(source.resolve("statecharts/Goalie/Goalie.cpp")));
 		assertTrue(Files.isRegularFile(source.resolve("activities/Scan/Scan.cpp")));
-		Run again = kse("generate", "-q", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
+		CommandRun again = kse("generate", "-q", legacy.resolve("Goalie/Goalie.stct").toString(), source.toString());
 		assertTrue(again.out().contains(" 0 written,"), again::all);
 		assertTrue(again.out().contains("7 activities kept"), again::all);
 
@@ -516,7 +501,7 @@ class CommandLineTest {
 		broken.getNodes().get(0).setType("AND");
 		Path brokenFile = directory.resolve("Broken.stct");
 		StatechartResources.save(broken, brokenFile);
-		Run refused = kse("generate", brokenFile.toString(), directory.resolve("other").toString());
+		CommandRun refused = kse("generate", brokenFile.toString(), directory.resolve("other").toString());
 		assertEquals(1, refused.code(), refused::all);
 		assertTrue(refused.err().contains(": error: the root state must be an OR state"), refused::all);
 		assertTrue(refused.err().contains("nothing generated"), refused::all);
@@ -525,7 +510,7 @@ class CommandLineTest {
 		// Several models into one folder in one call: the valid ones are generated, the broken
 		// one is refused, and the exit code says so.
 		Path several = directory.resolve("several");
-		Run both = kse("generate", "-q", legacy.resolve("Goalie/Goalie.stct").toString(), brokenFile.toString(),
+		CommandRun both = kse("generate", "-q", legacy.resolve("Goalie/Goalie.stct").toString(), brokenFile.toString(),
 				legacy.resolve("TestBehavior/TestBehavior.stct").toString(), several.toString());
 		assertEquals(1, both.code(), both::all);
 		assertTrue(both.out().contains("generated Goalie into"), both::all);
@@ -556,7 +541,7 @@ class CommandLineTest {
 		Path tree = monasTree();
 		Path model = tree.resolve("models/Localizer.stct");
 		Path source = tree.resolve("src");
-		Run run = kse("generate", "-q", model.toString(), source.toString());
+		CommandRun run = kse("generate", "-q", model.toString(), source.toString());
 		assertEquals(Kse.OK, run.code(), run::all);
 		assertTrue(run.out().contains("generated Localizer into " + source), run::all);
 		List<String> notes = run.err().lines().filter(line -> line.contains("note:")).toList();
@@ -613,20 +598,20 @@ class CommandLineTest {
 			Files.writeString(externalDtd, goalie.replaceFirst("\\?>", "?><!DOCTYPE x SYSTEM \"" + remote + "/model.dtd\">"));
 
 			// a DOCTYPE is refused where it begins, before its entity or DTD is fetched
-			Run entity = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", externalEntity.toString(), externalDtd.toString()));
+			CommandRun entity = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", externalEntity.toString(), externalDtd.toString()));
 			assertEquals(Kse.FAILED, entity.code(), entity::all);
 			assertTrue(entity.err().contains(externalEntity + ":2:10: a model file may not declare a DOCTYPE (KSE files have none)"), entity::all);
 			assertTrue(entity.err().contains(externalDtd + ":1:48: a model file may not declare a DOCTYPE (KSE files have none)"), entity::all);
-			Run cross = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", crossDocument.toString()));
+			CommandRun cross = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", crossDocument.toString()));
 			assertEquals(Kse.INVALID, cross.code(), cross::all);
 			assertTrue(cross.out().contains("error: the transition's target is in another document (" + remote + "/other.stct#//@nodes.0), which KSE does not open"), cross::all);
-			Run variable = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", remoteVariable.toString()));
+			CommandRun variable = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", remoteVariable.toString()));
 			assertEquals(Kse.INVALID, variable.code(), variable::all);
 			assertTrue(variable.out().contains("error: a variable of the state is in another document (" + remote + "/vars.stct#//@variables.0)"), variable::all);
-			Run generate = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("generate", "-q", crossDocument.toString(), directory.resolve("src").toString()));
+			CommandRun generate = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("generate", "-q", crossDocument.toString(), directory.resolve("src").toString()));
 			assertEquals(Kse.INVALID, generate.code(), generate::all);
 			assertFalse(Files.exists(directory.resolve("src")), "nothing generated from a model with a reference into another document");
-			Run unknown = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", unknownPackage.toString()));
+			CommandRun unknown = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse("validate", unknownPackage.toString()));
 			assertEquals(Kse.FAILED, unknown.code(), unknown::all);
 			assertTrue(unknown.err().contains(unknownPackage + ": not a statechart model"), unknown::all);
 			assertEquals(0, connections.get(), "a command opened a connection");
@@ -643,11 +628,11 @@ class CommandLineTest {
 		Path formula = directory.resolve("Deep.txt");
 		Files.writeString(formula, "Deep\ndeep = " + "(".repeat(depth) + "B" + ")+".repeat(depth) + "\n");
 		Path model = directory.resolve("Deep.stct");
-		Run transform = kse("transform", "-q", formula.toString(), "-o", model.toString());
+		CommandRun transform = kse("transform", "-q", formula.toString(), "-o", model.toString());
 		assertEquals(Kse.OK, transform.code(), transform::all);
-		Run validate = kse("validate", model.toString());
+		CommandRun validate = kse("validate", model.toString());
 		assertEquals(Kse.OK, validate.code(), validate::all);
-		Run label = kse("label", model.toString());
+		CommandRun label = kse("label", model.toString());
 		assertEquals(Kse.OK, label.code(), label::all);
 	}
 
@@ -658,11 +643,11 @@ class CommandLineTest {
 	@Test
 	void anInputThatIsNotAFileIsNamedForWhatItIs() throws IOException {
 		for (String command : List.of("transform", "validate", "label")) {
-			Run folder = kse(command, directory.toString());
+			CommandRun folder = kse(command, directory.toString());
 			assertEquals(Kse.FAILED, folder.code(), folder::all);
 			assertTrue(folder.err().contains("kse: " + directory + ": is a folder, not a file"), folder::all);
 			if (Files.exists(Path.of("/dev/zero"))) {
-				Run device = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse(command, "/dev/zero"));
+				CommandRun device = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> kse(command, "/dev/zero"));
 				assertEquals(Kse.FAILED, device.code(), device::all);
 				assertTrue(device.err().contains("kse: /dev/zero: not a regular file"), device::all);
 			}
@@ -674,14 +659,14 @@ class CommandLineTest {
 	void anOutputThatIsNotWhatTheCommandWritesIsNamed() throws IOException {
 		Path goalie = Models.LEGACY.resolve("Goalie/Goalie.stct");
 		Path folder = Files.createDirectories(directory.resolve("pictures"));
-		Run diagram = kse("diagram", goalie.toString(), "-o", folder.toString());
+		CommandRun diagram = kse("diagram", goalie.toString(), "-o", folder.toString());
 		assertEquals(Kse.FAILED, diagram.code(), diagram::all);
 		assertEquals("kse: " + folder + ": is a folder; give the name of a file to write\n", diagram.err(), diagram::all);
 		Path file = Files.writeString(directory.resolve("notes.txt"), "mine");
-		Run generate = kse("generate", "-q", goalie.toString(), file.toString());
+		CommandRun generate = kse("generate", "-q", goalie.toString(), file.toString());
 		assertEquals(Kse.FAILED, generate.code(), generate::all);
 		assertTrue(generate.err().endsWith("kse: " + file + ": not a folder (generate writes into a source folder)\n"), generate::all);
-		Run label = kse("label", goalie.toString(), "-o", file.resolve("Goalie.stct").toString());
+		CommandRun label = kse("label", goalie.toString(), "-o", file.resolve("Goalie.stct").toString());
 		assertEquals(Kse.FAILED, label.code(), label::all);
 		assertTrue(label.err().endsWith("kse: " + file + ": not a folder, so Goalie.stct cannot be written in it\n"), label::all);
 		assertEquals("mine", Files.readString(file));
@@ -696,7 +681,7 @@ class CommandLineTest {
 		Path binary = source.resolve("messages/Binary.proto");
 		Files.write(binary, new byte[] { 'm', 'e', 's', (byte) 0xC3, (byte) 0x28, (byte) 0xFF, '\n' });
 		for (String command : List.of("generate", "validate")) {
-			Run run = kse(command, model.toString(), source.toString());
+			CommandRun run = kse(command, model.toString(), source.toString());
 			assertEquals(Kse.FAILED, run.code(), run::all);
 			assertTrue(run.err().contains("kse: " + binary + ": not a text file (it is not UTF-8)"), run::all);
 			assertFalse(run.err().contains("Exception"), run::all);
@@ -710,11 +695,11 @@ class CommandLineTest {
 		Path messages = Files.createDirectories(source.resolve("messages"));
 		Files.writeString(messages.resolve("Bad.proto"), "syntax = \"proto2\";\nmessage Broken {\n  optional int32 = 1;\n}\n");
 		Path goalie = Models.LEGACY.resolve("Goalie/Goalie.stct");
-		Run validate = kse("validate", goalie.toString(), source.toString());
+		CommandRun validate = kse("validate", goalie.toString(), source.toString());
 		assertEquals(Kse.OK, validate.code(), validate::all);
 		assertTrue(Pattern.compile(Pattern.quote(messages.resolve("Bad.proto").toString()) + ":3:\\d+: warning: ").matcher(validate.out()).find(), validate::all);
 		assertTrue(validate.err().contains("0 errors, 1 warning"), validate::all);
-		Run generate = kse("generate", "-q", goalie.toString(), source.toString());
+		CommandRun generate = kse("generate", "-q", goalie.toString(), source.toString());
 		assertEquals(Kse.OK, generate.code(), generate::all);
 		assertTrue(generate.err().startsWith(messages.resolve("Bad.proto") + ":3:"), generate::all);
 	}
@@ -734,7 +719,7 @@ class CommandLineTest {
 		Path badNumber = directory.resolve("BadNumber.stct");
 		Files.writeString(badNumber, goalie.replaceFirst("source=\"//@nodes.0/@Children.1\"", "source=\"//@nodes.0/@Children.1e999\""));
 		for (Path model : List.of(toTheModel, twoSources, badNumber)) {
-			Run run = kse("validate", model.toString());
+			CommandRun run = kse("validate", model.toString());
 			assertEquals(Kse.FAILED, run.code(), run::all);
 			assertTrue(Pattern.compile("^kse: " + Pattern.quote(model.toString()) + ":\\d+:\\d+: not a statechart model: ").matcher(run.err()).find(), run::all);
 			assertFalse(Pattern.compile("Exception|Impl|For input string|java\\.").matcher(run.err()).find(), run::all);
@@ -748,20 +733,20 @@ class CommandLineTest {
 	void validateChecksAgainstTheSourceFoldersMessagesWhenGivenOne() throws IOException {
 		Path tree = monasTree();
 		Path model = tree.resolve("models/Localizer.stct");
-		Run alone = kse("validate", model.toString());
+		CommandRun alone = kse("validate", model.toString());
 		assertEquals(Kse.INVALID, alone.code(), alone::all);
 		assertTrue(alone.out().contains(model + ": 0.2->0.3 (Localize_TO_Approach): error: expression 1:17: unknown message type 'LocalizeDone'"), alone::all);
 		assertTrue(alone.out().contains(model + ": 0.3->0.4 (Approach_TO_0.4): error: expression 1:36: 'GameStateMessage' has no field 'penalty_secs_left'"),
 				alone::all);
 		assertFalse(alone.err().contains("note:"), alone::all);
 
-		Run withTree = kse("validate", model.toString(), tree.resolve("src").toString());
+		CommandRun withTree = kse("validate", model.toString(), tree.resolve("src").toString());
 		assertEquals(Kse.OK, withTree.code(), withTree::all);
 		assertTrue(withTree.err().contains(model + ": 0 errors, 0 warnings"), withTree::all);
 		assertTrue(withTree.err().contains(model + ": note: built-in messages replaced by the source tree's own: GameStateMessage by "
 				+ tree.resolve("src/messages/Gamecontroller.proto") + "\n"), withTree::all);
 
-		Run missing = kse("validate", model.toString(), tree.resolve("nowhere").toString());
+		CommandRun missing = kse("validate", model.toString(), tree.resolve("nowhere").toString());
 		assertEquals(Kse.FAILED, missing.code(), missing::all);
 		assertTrue(missing.err().contains(tree.resolve("nowhere") + " (not a folder)"), missing::all);
 	}
@@ -772,12 +757,12 @@ class CommandLineTest {
 		Path model = tree.resolve("models/Localizer.stct");
 		Files.writeString(model, Files.readString(model).replace("[worldstate.State.GameStateMessage.penalty", "[wordstate.State.GameStateMessage.penalty")
 				.replace("[behavior.State.LocalizeDone", "[behavior.State.LocaliseDone"));
-		Run run = kse("validate", model.toString(), tree.resolve("src").toString());
+		CommandRun run = kse("validate", model.toString(), tree.resolve("src").toString());
 		assertEquals(Kse.INVALID, run.code(), run::all);
 		assertEquals(List.of(model + ": 0.2->0.3 (Localize_TO_Approach): error: expression 1:17: unknown message type 'LocaliseDone'; did you mean 'LocalizeDone'?",
 				model + ": 0.3->0.4 (Approach_TO_0.4): error: expression 1:2: unknown topic 'wordstate'; did you mean 'worldstate'?"), run.out().lines().toList(),
 				run::all);
-		Run generate = kse("generate", "-q", model.toString(), tree.resolve("src").toString());
+		CommandRun generate = kse("generate", "-q", model.toString(), tree.resolve("src").toString());
 		assertEquals(Kse.INVALID, generate.code(), generate::all);
 		assertTrue(generate.err().contains("did you mean 'worldstate'?"), generate::all);
 	}
@@ -792,14 +777,14 @@ class CommandLineTest {
 		String transition = model.getTransitions().get(0).getSource().getLabel() + "->" + model.getTransitions().get(0).getTarget().getLabel() + " ("
 				+ model.getTransitions().get(0).getName() + ")";
 
-		Run validate = kse("validate", file.toString());
+		CommandRun validate = kse("validate", file.toString());
 		assertEquals(Kse.INVALID, validate.code(), validate::all);
 		assertEquals(List.of(file + ": " + transition + ": error: expression 2:3: events are not supported: the engine never raises 'BallSeen', so this"
 				+ " transition would never fire (as in the original KSE); say in the condition what to wait for instead, as in"
 				+ " [behavior.Signal.FallMessage.fall()!=0]"), validate.out().lines().toList(), validate::all);
 
 		Path source = directory.resolve("src");
-		Run generate = kse("generate", file.toString(), source.toString());
+		CommandRun generate = kse("generate", file.toString(), source.toString());
 		assertEquals(Kse.INVALID, generate.code(), generate::all);
 		assertTrue(generate.err().contains(file + ": " + transition + ": error: expression 2:3: events are not supported"), generate::all);
 		assertTrue(generate.err().contains("nothing generated"), generate::all);
@@ -808,7 +793,7 @@ class CommandLineTest {
 
 	@Test
 	void versionNamesKseAndWhatItRunsOn() {
-		Run run = kse("--version");
+		CommandRun run = kse("--version");
 		assertEquals(0, run.code(), run::all);
 		assertTrue(run.out().startsWith("kse "), run::all);
 		assertTrue(run.out().contains("Xtext ") && run.out().contains("Java " + System.getProperty("java.version")), run::all);

@@ -22,11 +22,11 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.kse.cli.Kse;
-import org.kse.cli.tests.CommandLineTest.Run;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.model.statechart.Transition;
 import org.kse.validation.ModelValidation;
+import org.kse.testing.CommandRun;
 
 /**
  * {@code kse new-behaviour NAME} (issue 18, item 2): the project it makes has every file, a model
@@ -41,14 +41,14 @@ class NewBehaviourCommandTest {
 	@TempDir
 	Path directory;
 
-	private static Run kse(String... args) {
+	private static CommandRun kse(String... args) {
 		return CommandLineTest.kse(args);
 	}
 
 	@Test
 	void makesAProjectWhoseModelValidatesWithNoProblemAndPrintsHowToBuildAndPlay() throws IOException {
 		Path project = directory.resolve("Striker");
-		Run run = kse("new-behaviour", "Striker", "-o", project.toString());
+		CommandRun run = kse("new-behaviour", "Striker", "-o", project.toString());
 
 		assertEquals(Kse.OK, run.code(), run.all());
 		for (String file : List.of("Striker.liveness", "Striker.stct", "CMakeLists.txt", "README.md", "src/activities/common/Robot.h",
@@ -63,7 +63,7 @@ class NewBehaviourCommandTest {
 		assertEquals("Striker", model.getName());
 		Diagnostic diagnostic = ModelValidation.validate(model);
 		assertEquals(List.of(), diagnostic.getChildren().stream().map(Diagnostic::getMessage).toList(), "no error, no warning");
-		Run validate = kse("validate", project.resolve("Striker.stct").toString());
+		CommandRun validate = kse("validate", project.resolve("Striker.stct").toString());
 		assertEquals(Kse.OK, validate.code(), validate.all());
 		assertTrue(validate.err().contains("Striker.stct: 0 errors, 0 warnings"), validate.all());
 
@@ -95,7 +95,7 @@ class NewBehaviourCommandTest {
 		Path project = directory.resolve("Keeper");
 		assertEquals(Kse.OK, kse("new-behaviour", "Keeper", "-o", project.toString()).code());
 		Path again = directory.resolve("again.stct");
-		Run transform = kse("transform", "-q", project.resolve("Keeper.liveness").toString(), "-o", again.toString());
+		CommandRun transform = kse("transform", "-q", project.resolve("Keeper.liveness").toString(), "-o", again.toString());
 		assertEquals(Kse.OK, transform.code(), transform.all());
 		assertEquals(Kse.OK, kse("label", again.toString()).code());
 
@@ -103,7 +103,7 @@ class NewBehaviourCommandTest {
 		int edits = 0;
 		while (edit.find()) {
 			assertEquals("Keeper.stct", edit.group(1));
-			Run run = kse("edit-transition", again.toString(), edit.group(2), edit.group(3), "--expression", edit.group(4));
+			CommandRun run = kse("edit-transition", again.toString(), edit.group(2), edit.group(3), "--expression", edit.group(4));
 			assertEquals(Kse.OK, run.code(), edit.group() + ": " + run.all());
 			edits++;
 		}
@@ -115,13 +115,13 @@ class NewBehaviourCommandTest {
 	void aFolderInUseIsRefusedAndLeftAlone() throws IOException {
 		Path used = Files.createDirectories(directory.resolve("Striker"));
 		Files.writeString(used.resolve("notes.txt"), "mine");
-		Run run = kse("new-behaviour", "Striker", "-o", used.toString());
+		CommandRun run = kse("new-behaviour", "Striker", "-o", used.toString());
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains("kse: " + used + " exists and is not empty: nothing was written"), run.all());
 		assertEquals(List.of("notes.txt"), list(used));
 
 		Path file = Files.writeString(directory.resolve("Bot"), "a file");
-		Run onFile = kse("new-behaviour", "Bot", "-o", file.toString());
+		CommandRun onFile = kse("new-behaviour", "Bot", "-o", file.toString());
 		assertEquals(Kse.FAILED, onFile.code(), onFile.all());
 		assertTrue(onFile.err().contains("is a file, not a folder"), onFile.all());
 
@@ -141,7 +141,7 @@ class NewBehaviourCommandTest {
 			"Chase     | taken by the new project's own formula" })
 	void aNameThatCannotBeABehavioursIsRefusedWithTheReason(String name, String reason) throws IOException {
 		Path folder = directory.resolve("project");
-		Run run = kse("new-behaviour", name, "-o", folder.toString());
+		CommandRun run = kse("new-behaviour", name, "-o", folder.toString());
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains("kse: '" + name + "' ") && run.err().contains(reason), run.all());
 		assertFalse(Files.exists(folder), "nothing written");
@@ -152,7 +152,7 @@ class NewBehaviourCommandTest {
 		assertEquals(Kse.FAILED, kse("new-behaviour").code(), "no NAME");
 		assertEquals(Kse.FAILED, kse("new-behaviour", "A", "B").code(), "two names");
 		assertEquals(Kse.FAILED, kse("new-behaviour", "A", "--force").code(), "an unknown option");
-		Run help = kse("new-behaviour", "--help");
+		CommandRun help = kse("new-behaviour", "--help");
 		assertEquals(Kse.OK, help.code());
 		assertTrue(help.out().contains("usage: kse new-behaviour NAME [-o DIR]") && help.out().contains("-o, --output DIR"), help.all());
 	}
@@ -168,13 +168,13 @@ class NewBehaviourCommandTest {
 		Files.delete(project.resolve("src/activities/Wait/CMakeLists.txt"));
 		Files.delete(project.resolve("src/activities/Wait"));
 
-		Run run = kse("generate", project.resolve("Striker.stct").toString(), project.resolve("src").toString(), "--no-statechart");
+		CommandRun run = kse("generate", project.resolve("Striker.stct").toString(), project.resolve("src").toString(), "--no-statechart");
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertTrue(Files.isRegularFile(project.resolve("src/activities/Wait/Wait.cpp")), "the missing activity's skeleton: " + run.all());
 		assertEquals(written, read(chase), "an activity that exists is never overwritten");
 		assertFalse(Files.exists(project.resolve("src/statecharts")), "no statechart in src/: " + run.all());
 
-		Run both = kse("generate", project.resolve("Striker.stct").toString(), project.resolve("src").toString(), "--no-statechart", "--no-activities");
+		CommandRun both = kse("generate", project.resolve("Striker.stct").toString(), project.resolve("src").toString(), "--no-statechart", "--no-activities");
 		assertEquals(Kse.FAILED, both.code(), both.all());
 		assertTrue(both.err().contains("leave nothing to write"), both.all());
 	}

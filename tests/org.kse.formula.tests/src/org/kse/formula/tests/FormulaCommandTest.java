@@ -4,10 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
@@ -15,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kse.cli.Kse;
 import org.kse.model.StatechartResources;
+import org.kse.testing.CommandRun;
 import org.kse.testing.Models;
 
 /** {@code kse formula}, run in-process as the other command-line tests run kse. */
@@ -23,21 +21,8 @@ class FormulaCommandTest {
 	@TempDir
 	Path directory;
 
-	record Run(int code, String out, String err) {
-		String all() {
-			return "exit " + code + "\n--- out:\n" + out + "--- err:\n" + err;
-		}
-	}
-
-	static Run kse(String... args) {
-		ByteArrayOutputStream out = new ByteArrayOutputStream();
-		ByteArrayOutputStream err = new ByteArrayOutputStream();
-		int code;
-		try (PrintStream outStream = new PrintStream(out, true, StandardCharsets.UTF_8);
-				PrintStream errStream = new PrintStream(err, true, StandardCharsets.UTF_8)) {
-			code = new Kse(outStream, errStream).run(args);
-		}
-		return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+	static CommandRun kse(String... args) {
+		return CommandRun.capture((out, err) -> new Kse(out, err).run(args));
 	}
 
 	@Test
@@ -48,7 +33,7 @@ class FormulaCommandTest {
 		Path model = directory.resolve("Keeper.stct");
 		Path back = directory.resolve("back/Keeper.liveness");
 
-		Run run = kse("formula", model.toString(), "-o", back.toString());
+		CommandRun run = kse("formula", model.toString(), "-o", back.toString());
 
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertEquals("wrote " + back + " (2 formulas)\n", run.out(), run.all());
@@ -61,7 +46,7 @@ class FormulaCommandTest {
 		Path model = directory.resolve("Goalie.stct");
 		Files.copy(Models.legacy("Goalie/Goalie.stct"), model);
 
-		Run run = kse("formula", model.toString());
+		CommandRun run = kse("formula", model.toString());
 
 		assertEquals(Kse.INVALID, run.code(), run.all());
 		assertTrue(run.out().startsWith("Goalie\ngoalie = (playing | nonPlaying)+\n"), run.all());
@@ -82,7 +67,7 @@ class FormulaCommandTest {
 		}
 		Path folder = directory.resolve("formulas");
 
-		Run run = kse("formula", directory.resolve("A.stct").toString(), directory.resolve("B.stct").toString(), "-o", folder.toString());
+		CommandRun run = kse("formula", directory.resolve("A.stct").toString(), directory.resolve("B.stct").toString(), "-o", folder.toString());
 
 		assertEquals(Kse.OK, run.code(), run.all());
 		assertEquals("a = XA || YA\n", Files.readString(folder.resolve("A.liveness")));
@@ -92,7 +77,7 @@ class FormulaCommandTest {
 	@Test
 	void aMissingOrBrokenModelExitsWithTwoAndNamesIt() throws IOException {
 		Path missing = directory.resolve("nowhere.stct");
-		Run run = kse("formula", missing.toString());
+		CommandRun run = kse("formula", missing.toString());
 		assertEquals(Kse.FAILED, run.code(), run.all());
 		assertTrue(run.err().contains(missing.toString()), run.all());
 
@@ -110,7 +95,7 @@ class FormulaCommandTest {
 	@Test
 	void helpSaysWhatItDoes() {
 		for (String[] args : new String[][] { { "formula", "--help" }, { "help", "formula" } }) {
-			Run run = kse(args);
+			CommandRun run = kse(args);
 			assertEquals(Kse.OK, run.code(), run.all());
 			assertTrue(run.out().startsWith("usage: kse formula <model.stct>... [-o out.liveness|folder]"), run.all());
 		}

@@ -68,9 +68,9 @@ class LegacyFormulaTest {
 
 	/** What the note of issue 20 shows: the formulas recovered and what they leave out. */
 	private static void print(String model, StatechartToFormula.Result result) {
-		System.out.println("== " + model + ": formulas recovered");
+		System.out.println("   " + model + ": formulas recovered");
 		System.out.print(result.fileText());
-		System.out.println("== " + model + ": " + result.problems().size() + " problems");
+		System.out.println("   " + model + ": " + result.problems().size() + " problems");
 		result.problems().forEach(problem -> System.out.println("  " + problem));
 	}
 }

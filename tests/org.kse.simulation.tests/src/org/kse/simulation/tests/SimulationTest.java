@@ -10,7 +10,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 
@@ -22,6 +21,7 @@ import org.kse.generator.monas.MonasGenerator;
 import org.kse.model.StatechartResources;
 import org.kse.model.statechart.Model;
 import org.kse.simulation.RuntimePrefix;
+import org.kse.simulation.Script;
 import org.kse.simulation.SimulationException;
 import org.kse.simulation.SimulationSession;
 import org.kse.simulation.SimulatorBuilder;
@@ -51,24 +51,10 @@ class SimulationTest {
 		return Path.of(prefix);
 	}
 
-	/** A case's commands and the lines each must give. */
-	private record Step(String command, List<String> lines) {
-	}
-
-	private static List<Step> steps(Path caseFile) throws IOException {
-		List<Step> steps = new ArrayList<>();
-		for (String raw : Files.readAllLines(caseFile, StandardCharsets.UTF_8)) {
-			String line = raw.strip();
-			if (line.isEmpty() || line.startsWith("#") || line.startsWith("model ")) {
-				continue;
-			}
-			if (Character.isWhitespace(raw.charAt(0))) {
-				steps.get(steps.size() - 1).lines().add(line);
-			} else {
-				steps.add(new Step(line, new ArrayList<>()));
-			}
+	private static List<Script.Step> steps(Path caseFile) throws IOException {
+		try (var reader = Files.newBufferedReader(caseFile, StandardCharsets.UTF_8)) {
+			return Script.read(reader);
 		}
-		return steps;
 	}
 
 	private static SimulationSession session(String caseName) throws Exception {
@@ -87,10 +73,10 @@ class SimulationTest {
 		runtime();
 		try (SimulationSession session = session(caseName)) {
 			assertEquals(caseName, session.model());
-			for (Step step : steps(CASES.resolve(caseName + ".case"))) {
+			for (Script.Step step : steps(CASES.resolve(caseName + ".case"))) {
 				SimulationSession.Result result = session.execute(step.command());
 				assertTrue(result.ok(), () -> step.command() + ": " + result.error());
-				assertEquals(step.lines(), result.lines(), step.command());
+				assertEquals(step.expected(), result.lines(), step.command());
 			}
 		}
 	}
@@ -177,7 +163,7 @@ class SimulationTest {
 
 	@Test
 	void aBuildThatFailsEndsWithTheEndOfItsLog() throws Exception {
-		assumeTrue(onPath("cmake"), "cmake is not installed");
+		assumeTrue(SimulatorBuilder.onPath("cmake"), "cmake is not installed");
 		Path broken = temp.resolve("broken-prefix/lib/cmake/kse_runtime");
 		Files.createDirectories(broken);
 		Files.writeString(broken.resolve("kse_runtimeConfig.cmake"), "message(FATAL_ERROR \"this runtime is broken on purpose\")\n");
@@ -214,14 +200,5 @@ class SimulationTest {
 
 	private static SimulationSession.Result result(String command, List<String> lines) {
 		return new SimulationSession.Result(true, command, lines, List.of(), Optional.empty(), Optional.empty(), List.of(), List.of(), List.of(), 0, true);
-	}
-
-	private static boolean onPath(String program) {
-		for (String folder : System.getenv().getOrDefault("PATH", "").split(":")) {
-			if (!folder.isEmpty() && Files.isExecutable(Path.of(folder, program))) {
-				return true;
-			}
-		}
-		return false;
 	}
 }
