@@ -25,7 +25,7 @@ while IFS= read -r option; do
   # the option that lets Guice use sun.misc.Unsafe without a warning is JDK 24's
   if [ "$option" = --sun-misc-unsafe-memory-access=allow ] && [ "$version" -lt 24 ]; then continue; fi
   # a server lives long enough for the optimizing compiler to pay; a command does not
-  if [ "$option" = -XX:TieredStopAtLevel=1 ] && [ "${1:-}" = serve ]; then continue; fi
+  if [ "$option" = -XX:TieredStopAtLevel=1 ] && { [ "${1:-}" = serve ] || [ "${1:-}" = lsp ]; }; then continue; fi
   options+=("$option")
 done < "$lib/jvm-options"
 cache=()

@@ -55,6 +55,10 @@ public final class Kse {
 			                      renumber labels and rename states and transitions
 			  formula <model.stct>... [-o out.liveness|folder]
 			                      the liveness formulas a statechart stands for (transform's inverse)
+			  import-scxml <chart.scxml> [-o model.stct]
+			                      an SCXML statechart (another tool's, or exported) as a model
+			  export-scxml <model.stct>... [-o chart.scxml|folder]
+			                      a statechart as W3C SCXML that runs as the engine does
 			  generate <model.stct>... <source-folder> | -o <source-folder> [--logger]
 			                      write the Monas C++ of models into a source tree
 			  new-behaviour NAME [-o DIR]
@@ -67,6 +71,8 @@ public final class Kse {
 			                      edit the folder's statecharts as diagrams in a local browser
 			  simulate <model.stct> [--runtime DIR] [--script FILE] [--save-case DIR/NAME]
 			                      run a statechart on the engine without a robot, by commands
+			  lsp                 a language server over stdio for formulas and the expressions
+			                      of statecharts (editors: VS Code, any LSP client)
 			  demo [--seed N] [--half SECONDS] [--out DIR]
 			                      the pipeline on the examples, then a match (the repository's ./kse)
 			  help [command]      show help
@@ -208,6 +214,19 @@ public final class Kse {
 			  --port N            the port to listen on (default: any free port)
 			  --pages DIR         serve the editor's page from DIR instead of the built-in one""";
 
+	private static final String LSP_HELP = """
+			usage: kse lsp
+
+			A language server (the Language Server Protocol) on standard input and output, for an
+			editor to start: formula files (.liveness, and the original tool's .txt) get their
+			problems as kse transform reports them, completion of operators and names, hover, go to
+			definition of a capability and an outline of their formulas; statecharts (.stct) get the
+			problems of each transition expression (TE attribute) at its place in the file, as kse
+			validate checks it, and completion of topics, kinds, message types, fields and helpers
+			inside it. Messages are the standard ones and those of a messages/ folder beside the
+			model. No port, no network; it runs until the editor stops it. The VS Code extension of
+			editors/vscode starts it.""";
+
 	private static final String SIMULATE_HELP = """
 			usage: kse simulate <model.stct> [--runtime DIR] [--script FILE] [--save-case DIR/NAME]
 			                    [--build-dir DIR] [-q]
@@ -268,6 +287,8 @@ public final class Kse {
 				case "validate" -> validate(rest);
 				case "label" -> label(rest);
 				case "formula" -> formula(rest);
+				case "import-scxml" -> importScxml(rest);
+				case "export-scxml" -> exportScxml(rest);
 				case "generate" -> generate(rest);
 				case "new-behaviour" -> newBehaviour(rest);
 				case "diagram" -> diagram(rest);
@@ -276,6 +297,7 @@ public final class Kse {
 						: usage("kse demo runs from the repository's ./kse, which has the examples and the runtime's sources");
 				case "serve" -> serve(rest);
 				case "simulate" -> simulate(rest);
+				case "lsp" -> lsp(rest);
 				case "help", "-h", "--help" -> help(rest);
 				case "version", "--version" -> version();
 				default -> usage("unknown command '" + args[0] + "'");
@@ -317,6 +339,8 @@ public final class Kse {
 			case "validate" -> VALIDATE_HELP;
 			case "label" -> LABEL_HELP;
 			case "formula" -> FORMULA_HELP;
+			case "import-scxml" -> ImportScxml.HELP;
+			case "export-scxml" -> ExportScxml.HELP;
 			case "generate" -> GENERATE_HELP;
 			case "new-behaviour" -> NEW_BEHAVIOUR_HELP;
 			case "diagram" -> DIAGRAM_HELP;
@@ -324,6 +348,7 @@ public final class Kse {
 			case "demo" -> DEMO_HELP;
 			case "serve" -> SERVE_HELP;
 			case "simulate" -> SIMULATE_HELP;
+			case "lsp" -> LSP_HELP;
 			default -> USAGE;
 		});
 		return OK;
@@ -473,6 +498,33 @@ public final class Kse {
 		return each(models, model -> FormulaCommand.run(model,
 				folder != null ? folder.resolve(withExtension(model, "liveness").getFileName()) : output != null ? Path.of(output) : null,
 				models.size() > 1, out, err));
+	}
+
+	private int exportScxml(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output"), List.of());
+		if (options.help) {
+			out.println(ExportScxml.HELP);
+			return OK;
+		}
+		List<Path> models = options.many("model file");
+		String output = options.value("-o", "--output");
+		// -o names a file only for one model and a name ending in .scxml; else the folder to write into
+		Path folder = output != null && (models.size() > 1 || !output.endsWith(".scxml") || Files.isDirectory(Path.of(output))) ? folder(Path.of(output)) : null;
+		return each(models, model -> ExportScxml.run(model,
+				folder != null ? folder.resolve(withExtension(model, "scxml").getFileName()) : output != null ? Path.of(output) : withExtension(model, "scxml"),
+				out, err));
+	}
+
+	private int importScxml(List<String> args) throws IOException, UsageException {
+		Options options = Options.parse(args, List.of("-o", "--output"), List.of());
+		if (options.help) {
+			out.println(ImportScxml.HELP);
+			return OK;
+		}
+		Path document = options.single("SCXML file");
+		String output = options.value("-o", "--output");
+		return each(List.of(document), file -> ImportScxml.run(file,
+				output != null ? Path.of(output) : withExtension(file, StatechartResources.FILE_EXTENSION), out, err));
 	}
 
 	private int generate(List<String> args) throws IOException, UsageException {
@@ -754,6 +806,20 @@ public final class Kse {
 			err.println("kse simulate: " + e.getMessage());
 			return FAILED;
 		}
+	}
+
+	/** The protocol owns standard output from here on: the server sends everything else to {@code err}. */
+	private int lsp(List<String> args) throws UsageException {
+		// --stdio: what LSP clients add to say the transport, the only one there is
+		Options options = Options.parse(args, List.of(), List.of("--stdio"));
+		if (options.help) {
+			out.println(LSP_HELP);
+			return OK;
+		}
+		if (!options.positional.isEmpty()) {
+			throw new UsageException("kse lsp takes no arguments");
+		}
+		return org.kse.lsp.KseLanguageServer.serve(System.in, out, err);
 	}
 
 	private int serve(List<String> args) throws IOException, UsageException {

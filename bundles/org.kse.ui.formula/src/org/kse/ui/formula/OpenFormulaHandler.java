@@ -22,18 +22,16 @@ public class OpenFormulaHandler extends AbstractHandler {
 			return null;
 		}
 		IFile model = files.get(0);
-		String name = model.getFullPath().removeFileExtension().lastSegment();
-		for (String extension : List.of("liveness", "txt")) {
-			IFile formula = model.getParent().getFile(org.eclipse.core.runtime.Path.fromPortableString(name + "." + extension));
-			if (formula.exists()) {
-				try {
-					IDE.openEditor(HandlerUtil.getActiveWorkbenchWindowChecked(event).getActivePage(), formula, FormulaEditor.ID);
-				} catch (PartInitException e) {
-					throw new ExecutionException("cannot open " + formula.getFullPath() + ": " + e.getMessage(), e);
-				}
-				return null;
+		IFile formula = FormulaFiles.existing(model);
+		if (formula != null) {
+			try {
+				IDE.openEditor(HandlerUtil.getActiveWorkbenchWindowChecked(event).getActivePage(), formula, FormulaEditor.ID);
+			} catch (PartInitException e) {
+				throw new ExecutionException("cannot open " + formula.getFullPath() + ": " + e.getMessage(), e);
 			}
+			return null;
 		}
+		String name = FormulaFiles.baseName(model);
 		MessageDialog.openInformation(HandlerUtil.getActiveShellChecked(event), "Open Formula",
 				"There is no " + name + ".liveness or " + name + ".txt next to " + model.getName() + ".");
 		return null;

@@ -36,7 +36,7 @@ class KseMenuTest {
 		menu.notifyListeners(SWT.Show, new Event());
 		try {
 			assertEquals(List.of("Transform to Statechart\tCtrl+Alt+T", "-", "Validate\tCtrl+Alt+V", "Label\tCtrl+Alt+L", "Generate Code\tCtrl+Alt+G",
-					"Generate Code Into...", "-", "Edit Activity...", "Open Formula", "-", "Monitor...", "Simulate"), entries(menu));
+					"Generate Code Into...", "-", "Edit Activity...", "Open Formula", "Update Formula from Statechart...", "-", "Monitor...", "Simulate"), entries(menu));
 		} finally {
 			menu.notifyListeners(SWT.Hide, new Event());
 		}
