@@ -11,11 +11,8 @@ repo="$(cd "$here/../.." && pwd)"
 prefix="$1"
 work="$2"
 kse="${KSE:-$repo/kse}"
-# case -> why the export refuses it (the element it names)
-declare -A REFUSED=(
-  [TimeoutOfAnotherTopic]="Watch_TO_0.2.2.3: a TimeoutCheck in a later region of an AND state whose earlier region publishes"
-  [TimeoutSharedByTopic]="Watch_TO_0.2.2.3: a TimeoutCheck in a later region of an AND state whose earlier region publishes"
-)
+# case -> why the export refuses it: "<transition name>: <reason>" (none today)
+declare -A REFUSED=()
 rm -rf "$work/charts"
 mkdir -p "$work/charts"
 status=0

@@ -330,8 +330,11 @@ public final class StatechartResources {
 	private static final String TOTAL_ENTITY_PROPERTY = "jdk.xml.totalEntitySizeLimit";
 	/** The parser properties a load of KSE's may set; the streaming reader follows each of them. */
 	private static final java.util.Set<String> LIMIT_PROPERTIES = java.util.Set.of(DEPTH_PROPERTY, GENERAL_ENTITY_PROPERTY, TOTAL_ENTITY_PROPERTY);
-	/** The SAX feature that makes the parser refuse a DOCTYPE where it begins, before it reads or fetches anything of it. */
-	private static final String DISALLOW_DOCTYPE = "http://apache.org/xml/features/disallow-doctype-decl";
+	/**
+	 * The SAX feature that makes the parser refuse a DOCTYPE where it begins, before it reads or
+	 * fetches anything of it: every reader of XML from a stranger in KSE sets it.
+	 */
+	public static final String DISALLOW_DOCTYPE = "http://apache.org/xml/features/disallow-doctype-decl";
 	private static final String DOCTYPE_REFUSED = "a model file may not declare a DOCTYPE (KSE files have none)";
 
 	/**

@@ -33,7 +33,7 @@ public final class LegacyNotation {
 			DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
 			factory.setNamespaceAware(false);
 			factory.setExpandEntityReferences(false);
-			factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+			factory.setFeature(StatechartResources.DISALLOW_DOCTYPE, true);
 			// as deep as a model may be (the JDK's default of 100 is less than a deep model's diagram)
 			factory.setAttribute("jdk.xml.maxElementDepth", String.valueOf(StatechartResources.MAX_ELEMENT_DEPTH));
 			var builder = factory.newDocumentBuilder();

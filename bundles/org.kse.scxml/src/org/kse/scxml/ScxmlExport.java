@@ -224,31 +224,109 @@ public final class ScxmlExport {
 				}
 			}
 		}
-		boolean earlierPublishes = false;
-		for (Node region : node.getChildren()) {
-			List<Transition> inside = transitionsInside(region);
-			if (earlierPublishes) {
-				for (Transition t : inside) {
-					Planned p = planned.get(t);
-					if (p != null && p.guard() != null && p.guard().checksTimeouts()) {
-						problems.add(ScxmlProblem.error(describe(t), "its TimeoutCheck refreshes the blackboard of " + describe(region)
-								+ " while an earlier region of " + describe(node) + " publishes in its actions; SCXML evaluates the guard before that action runs, the engine after"));
-					}
-				}
-			}
-			for (Transition t : inside) {
+		List<Node> regions = node.getChildren();
+		for (int l = 1; l < regions.size(); l++) {
+			Node later = regions.get(l);
+			for (Transition t : transitionsInside(later)) {
 				Planned p = planned.get(t);
-				if (p != null && publishes(t)) {
-					earlierPublishes = true;
+				if (p == null || p.guard() == null || !p.guard().checksTimeouts()) {
+					continue;
+				}
+				Transition publisher = publisherSeenInTheSameStep(node, regions.subList(0, l), later, t);
+				if (publisher != null) {
+					problems.add(ScxmlProblem.error(describe(t), "its TimeoutCheck refreshes the blackboard of " + describe(later)
+							+ " in a step where " + describe(publisher) + " in an earlier region of " + describe(node)
+							+ " may publish on a topic that blackboard reads; SCXML evaluates the guard before that action runs, the engine after"));
 				}
 			}
 		}
 	}
 
-	private boolean publishes(Transition t) {
+	/**
+	 * A transition of an earlier region whose publish can change what the TimeoutCheck guard of
+	 * {@code guarded} reads or leaves refreshed, or {@code null}. SCXML runs the guard (read, then
+	 * process its blackboard) before the publish, the engine after; that shows only when (a) the
+	 * publish reaches the guard's blackboard, at once (the same blackboard) or through its inbox (a
+	 * topic a guard of that blackboard reads: processed by the engine's refresh, by SCXML's next
+	 * one, and read in between), and (b) both can happen in one step.
+	 */
+	private Transition publisherSeenInTheSameStep(Node and, List<Node> earlierRegions, Node later, Transition guarded) {
+		String board = planned.get(guarded).board().getLabel();
+		Set<String> read = subscriptions.getOrDefault(board, Set.of());
+		for (Node earlier : earlierRegions) {
+			for (Transition t : transitionsInside(earlier)) {
+				boolean reaches = planned.get(t).board().getLabel().equals(board)
+						? !publishedTopics(t).isEmpty()
+						: publishedTopics(t).stream().anyMatch(read::contains);
+				if (reaches && !(firesOnlyInTheFirstStep(t, earlier, and) && !triedInTheFirstStep(guarded, later))) {
+					return t;
+				}
+			}
+		}
+		return null;
+	}
+
+	/** The topics the transition's actions publish on (a TimeoutAction publishes its TimeoutMsg). */
+	private static Set<String> publishedTopics(Transition t) {
 		ExpressionParser.Result parsed = ExpressionParser.parse(t.getTE());
-		return parsed.expression() != null
-				&& parsed.expression().getActions().stream().anyMatch(a -> a instanceof Publish || a instanceof TimeoutAction);
+		Set<String> topics = new LinkedHashSet<>();
+		if (parsed.expression() != null) {
+			for (Action action : parsed.expression().getActions()) {
+				if (action instanceof Publish publish) {
+					topics.add(publish.getTopic());
+				} else if (action instanceof TimeoutAction timeout) {
+					topics.add(timeout.getTopic());
+				}
+			}
+		}
+		return topics;
+	}
+
+	/**
+	 * Whether {@code t} can fire only in the first step of {@code region} after {@code and} is
+	 * entered: it leaves the region's START, which an unguarded transition to a state always
+	 * leaves then (rule 4), and the region cannot still be running from an earlier entry (it has
+	 * no activity of its own, or nothing leaves the AND state, so it is entered once).
+	 */
+	private boolean firesOnlyInTheFirstStep(Transition t, Node region, Node and) {
+		Node start = t.getSource();
+		if (!NodeKind.START.is(start) || parent(start) != region) {
+			return false;
+		}
+		boolean alwaysLeft = leaving.getOrDefault(start, List.of()).stream()
+				.anyMatch(s -> planned.get(s).guard() == null && !NodeKind.CONDITION.is(s.getTarget()));
+		boolean neverRunning = !hasOwnActivity(region) || planned.keySet().stream().noneMatch(s -> leaves(s, and));
+		return alwaysLeft && neverRunning;
+	}
+
+	/** Whether the transition may be tried in the region's first step: the region's START (and the connectors after it) or the region itself. */
+	private static boolean triedInTheFirstStep(Transition t, Node region) {
+		Node source = t.getSource();
+		return source == region || NodeKind.CONDITION.is(source) || NodeKind.START.is(source) && parent(source) == region;
+	}
+
+	private static boolean hasOwnActivity(Node region) {
+		return hasOwnActivity(region, region);
+	}
+
+	private static boolean hasOwnActivity(Node node, Node region) {
+		for (Node child : node.getChildren()) {
+			if (NodeKind.BASIC.is(child) || !isRegion(child) && hasOwnActivity(child, region)) {
+				return true;
+			}
+		}
+		return false;
+	}
+
+	/** Rule 6: whether firing the transition leaves {@code node} (it leaves an ancestor-or-self of the source below the lca). */
+	private static boolean leaves(Transition t, Node node) {
+		Node lca = lca(t.getSource(), t.getTarget());
+		for (Node y = node; y != null; y = parent(y)) {
+			if (y != lca && isInside(y, lca) && isInside(t.getSource(), y)) {
+				return true;
+			}
+		}
+		return false;
 	}
 
 	private List<Transition> transitionsInside(Node node) {

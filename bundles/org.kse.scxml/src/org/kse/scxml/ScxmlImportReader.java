@@ -12,6 +12,7 @@ import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.parsers.SAXParser;
 import javax.xml.parsers.SAXParserFactory;
 
+import org.kse.model.StatechartResources;
 import org.xml.sax.Attributes;
 import org.xml.sax.InputSource;
 import org.xml.sax.Locator;
@@ -33,7 +34,7 @@ final class ScxmlImportReader {
 	/** Deeper than KSE's statecharts may nest (the validator's limit is 1,000 states), with room for executable content. */
 	static final int MAX_DEPTH = 1_100;
 
-	private static final String DISALLOW_DOCTYPE = "http://apache.org/xml/features/disallow-doctype-decl";
+	private static final String DISALLOW_DOCTYPE = StatechartResources.DISALLOW_DOCTYPE;
 
 	/** One XML element: its namespace and local name, its attributes, where its start tag ends, its child elements. */
 	static final class Element {
