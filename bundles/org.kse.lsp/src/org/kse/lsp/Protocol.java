@@ -1,9 +1,5 @@
 package org.kse.lsp;
 
-import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.List;
-
 import org.eclipse.lsp4j.CompletionItem;
 import org.eclipse.lsp4j.CompletionItemKind;
 import org.eclipse.lsp4j.Diagnostic;
@@ -14,6 +10,7 @@ import org.eclipse.lsp4j.TextEdit;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.editor.contentassist.ContentAssistEntry;
 import org.eclipse.xtext.ide.server.Document;
+import org.kse.messages.LineStarts;
 
 /** The protocol's shapes of what the languages find: ranges, diagnostics, completion items. */
 final class Protocol {
@@ -41,23 +38,14 @@ final class Protocol {
 	 */
 	private static synchronized int[] lineStarts(String text) {
 		if (text != indexed) {
-			List<Integer> starts = new ArrayList<>();
-			starts.add(0);
-			for (int i = 0; i < text.length(); i++) {
-				char c = text.charAt(i);
-				if (c == '\n' || c == '\r' && (i + 1 >= text.length() || text.charAt(i + 1) != '\n')) {
-					starts.add(i + 1);
-				}
-			}
-			indexedLineStarts = starts.stream().mapToInt(Integer::intValue).toArray();
+			indexedLineStarts = LineStarts.of(text);
 			indexed = text;
 		}
 		return indexedLineStarts;
 	}
 
 	private static Position position(int[] lineStarts, int offset) {
-		int line = Arrays.binarySearch(lineStarts, offset);
-		line = line >= 0 ? line : -line - 2;
+		int line = LineStarts.lineIndex(lineStarts, offset);
 		return new Position(line, offset - lineStarts[line]);
 	}
 

@@ -103,7 +103,7 @@ public final class ProtoReader {
 		this.file = file;
 		this.text = text == null ? "" : text;
 		this.problems = new Problems(file);
-		this.lineStarts = lineStarts(this.text);
+		this.lineStarts = LineStarts.of(this.text);
 	}
 
 	/** Reads one file; {@code file} only names it in the model and in problems, it is not opened. */
@@ -810,31 +810,8 @@ public final class ProtoReader {
 		return start(object);
 	}
 
-	/** Line starts; "\r\n", "\n" and a lone "\r" each end a line, as protoc counts them. */
-	private static int[] lineStarts(String text) {
-		List<Integer> starts = new ArrayList<>(List.of(0));
-		for (int i = 0; i < text.length(); i++) {
-			char c = text.charAt(i);
-			if (c == '\n' || c == '\r' && (i + 1 >= text.length() || text.charAt(i + 1) != '\n')) {
-				starts.add(i + 1);
-			}
-		}
-		return starts.stream().mapToInt(Integer::intValue).toArray();
-	}
-
 	private int lineIndex(int offset) {
-		int o = Math.max(0, Math.min(offset, text.length()));
-		int low = 0;
-		int high = lineStarts.length - 1;
-		while (low < high) {
-			int mid = (low + high + 1) >>> 1;
-			if (lineStarts[mid] <= o) {
-				low = mid;
-			} else {
-				high = mid - 1;
-			}
-		}
-		return low;
+		return LineStarts.lineIndex(lineStarts, Math.max(0, Math.min(offset, text.length())));
 	}
 
 	private int line(int offset) {

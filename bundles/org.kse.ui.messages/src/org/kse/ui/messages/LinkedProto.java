@@ -14,6 +14,7 @@ import java.util.Optional;
 import java.util.SequencedMap;
 import java.util.stream.Stream;
 
+import org.kse.messages.LineStarts;
 import org.kse.messages.EnumType;
 import org.kse.messages.Field;
 import org.kse.messages.MessageCatalog;
@@ -171,15 +172,7 @@ final class LinkedProto {
 
 		Positions(String text) {
 			this.text = text;
-			List<Integer> starts = new ArrayList<>();
-			starts.add(0);
-			for (int i = 0; i < text.length(); i++) {
-				char c = text.charAt(i);
-				if (c == '\n' || c == '\r' && (i + 1 >= text.length() || text.charAt(i + 1) != '\n')) {
-					starts.add(i + 1);
-				}
-			}
-			lineStarts = starts.stream().mapToInt(Integer::intValue).toArray();
+			lineStarts = LineStarts.of(text);
 		}
 
 		int offset(int line, int column) {
